@@ -1,0 +1,208 @@
+#include "vtkReliefTangentFrameFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolyDataTangents.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+vtkStandardNewMacro(vtkReliefTangentFrameFilter);
+
+namespace
+{
+bool IsTriangleMesh(vtkPolyData* mesh)
+{
+  if (mesh->GetNumberOfStrips() > 0)
+  {
+    return false;
+  }
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(size, ids);
+    if (size != 3)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The array itself when it has a name, else a named copy (the input stays untouched).
+vtkSmartPointer<vtkDataArray> Named(vtkDataArray* array, const char* name)
+{
+  if (array->GetName())
+  {
+    return array;
+  }
+  auto named = vtk::TakeSmartPointer(array->NewInstance());
+  named->DeepCopy(array);
+  named->SetName(name);
+  return named;
+}
+
+glm::dvec3 PointOf(vtkPolyData* mesh, vtkIdType id)
+{
+  double p[3];
+  mesh->GetPoint(id, p);
+  return glm::dvec3(p[0], p[1], p[2]);
+}
+
+glm::dvec3 TupleOf3(vtkDataArray* array, vtkIdType id)
+{
+  double v[3];
+  array->GetTuple(id, v);
+  return glm::dvec3(v[0], v[1], v[2]);
+}
+
+glm::dvec2 TupleOf2(vtkDataArray* array, vtkIdType id)
+{
+  return glm::dvec2(array->GetComponent(id, 0), array->GetComponent(id, 1));
+}
+
+// Area-weighted mean, over the triangles around each point, of the model length of
+// one texture unit projected on the point's tangent and bitangent.
+vtkSmartPointer<vtkFloatArray> ComputeTextureScale(vtkPolyData* mesh)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkDataArray* tangents = mesh->GetPointData()->GetTangents();
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  const vtkIdType numberOfPoints = mesh->GetNumberOfPoints();
+  std::vector<glm::dvec3> sums(numberOfPoints, glm::dvec3(0.0)); // (area s_x, area s_y, area)
+
+  auto triangles = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (triangles->GoToFirstCell(); !triangles->IsDoneWithTraversal(); triangles->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    triangles->GetCurrentCell(size, ids);
+    const glm::dvec3 edge1 = PointOf(mesh, ids[1]) - PointOf(mesh, ids[0]);
+    const glm::dvec3 edge2 = PointOf(mesh, ids[2]) - PointOf(mesh, ids[0]);
+    const glm::dvec2 uv1 = TupleOf2(tcoords, ids[1]) - TupleOf2(tcoords, ids[0]);
+    const glm::dvec2 uv2 = TupleOf2(tcoords, ids[2]) - TupleOf2(tcoords, ids[0]);
+    const double uvArea = uv1.x * uv2.y - uv2.x * uv1.y;
+    const double area = 0.5 * glm::length(glm::cross(edge1, edge2));
+    if (std::abs(uvArea) < 1e-300 || area <= 0.0)
+    {
+      continue; // no parametrization to measure on a degenerate triangle
+    }
+    const glm::dvec3 dPdu = (edge1 * uv2.y - edge2 * uv1.y) / uvArea;
+    const glm::dvec3 dPdv = (edge2 * uv1.x - edge1 * uv2.x) / uvArea;
+    for (int corner = 0; corner < 3; ++corner)
+    {
+      const glm::dvec3 normal = TupleOf3(normals, ids[corner]);
+      glm::dvec3 tangent = TupleOf3(tangents, ids[corner]);
+      tangent = glm::normalize(tangent - normal * glm::dot(normal, tangent));
+      const glm::dvec3 bitangent = glm::cross(normal, tangent);
+      sums[ids[corner]] +=
+        glm::dvec3(area * glm::dot(dPdu, tangent), area * glm::dot(dPdv, bitangent), area);
+    }
+  }
+
+  glm::dvec3 total(0.0);
+  for (const auto& sum : sums)
+  {
+    total += glm::dvec3(std::abs(sum.x), sum.y, sum.z);
+  }
+  // points on no measurable triangle take the mesh's mean scale
+  const glm::dvec2 fallback =
+    total.z > 0.0 ? glm::dvec2(total.x, std::abs(total.y)) / total.z : glm::dvec2(1.0);
+
+  vtkNew<vtkFloatArray> scale;
+  scale->SetName(vtkReliefTangentFrameFilter::TextureScaleArrayName());
+  scale->SetNumberOfComponents(2);
+  scale->SetNumberOfTuples(numberOfPoints);
+  for (vtkIdType id = 0; id < numberOfPoints; ++id)
+  {
+    const glm::dvec3& sum = sums[id];
+    const glm::dvec2 value = sum.z > 0.0 ? glm::dvec2(sum.x, sum.y) / sum.z : fallback;
+    scale->SetTuple2(id, value.x, value.y);
+  }
+  return scale;
+}
+}
+
+vtkReliefTangentFrameFilter::vtkReliefTangentFrameFilter() = default;
+vtkReliefTangentFrameFilter::~vtkReliefTangentFrameFilter() = default;
+
+int vtkReliefTangentFrameFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->HasTangentFrame = false;
+
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro(<< MissingTextureCoordinatesAdvice());
+    output->ShallowCopy(input);
+    return 1;
+  }
+
+  vtkSmartPointer<vtkPolyData> mesh = input;
+  if (!IsTriangleMesh(mesh))
+  {
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->SetInputData(mesh);
+    triangulate->Update();
+    mesh = triangulate->GetOutput();
+  }
+  this->UpdateProgress(0.25);
+
+  if (!mesh->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    normals->SetFeatureAngle(this->FeatureAngle);
+    normals->ComputePointNormalsOn();
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+  this->UpdateProgress(0.5);
+
+  if (!mesh->GetPointData()->GetTangents())
+  {
+    vtkNew<vtkPolyDataTangents> tangents;
+    tangents->SetInputData(mesh);
+    tangents->ComputePointTangentsOn();
+    tangents->ComputeCellTangentsOff();
+    tangents->Update();
+    mesh = tangents->GetOutput();
+  }
+  this->UpdateProgress(0.75);
+
+  output->ShallowCopy(mesh);
+  // the mapper binds arrays to shader inputs by name
+  vtkPointData* pointData = output->GetPointData();
+  pointData->SetNormals(Named(pointData->GetNormals(), "Normals"));
+  pointData->SetTangents(Named(pointData->GetTangents(), "Tangents"));
+  pointData->SetTCoords(Named(pointData->GetTCoords(), "TCoords"));
+  pointData->AddArray(ComputeTextureScale(output));
+  this->HasTangentFrame = true;
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkReliefTangentFrameFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "HasTangentFrame: " << this->HasTangentFrame << "\n";
+}

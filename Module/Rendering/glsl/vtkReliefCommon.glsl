@@ -1,0 +1,68 @@
+// vtkRelief: types and helpers shared by every frame and every search method.
+//
+// Written in the subset of GLSL that GLM also compiles: the unit tests include this
+// very file as C++, so the CPU mirror cannot drift from the shader. Rules: float
+// literals carry an f suffix, no swizzles, no inout, structs returned by value.
+// Height reads go through RELIEF_DEPTH(uv), defined by the includer.
+//
+// Relief texture space: (u, v, depth); u, v per tile (repeating), depth in [0, 1],
+// 0 at the polygon, 1 deepest. A ray is a segment in that space, t in [0, 1].
+
+struct ReliefRay
+{
+  vec3 origin;    // (u, v, depth) at t = 0
+  vec3 direction; // change of (u, v, depth) from t = 0 to t = 1
+};
+
+struct ReliefHit
+{
+  vec3 position; // (u, v, depth) of the first intersection
+  float t;       // its ray parameter
+  bool hit;      // false when the ray leaves the search range without meeting the field
+  int samples;   // height samples the search took
+};
+
+vec3 reliefRayAt(ReliefRay ray, float t)
+{
+  return ray.origin + t * ray.direction;
+}
+
+vec2 reliefRayUV(ReliefRay ray, float t)
+{
+  return vec2(ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y);
+}
+
+// True where the ray point lies on or below the height field.
+bool reliefBelowField(vec3 point)
+{
+  return point.z >= RELIEF_DEPTH(vec2(point.x, point.y));
+}
+
+// The view ray of a fragment: it enters the relief at the polygon (depth 0, the
+// fragment's texture coordinates) and is followed down to depth 1. direction is the
+// view direction in texture-space units (du, dv, ddepth), ddepth > 0 going in; a
+// grazing ray is clamped so its texture-space run stays finite.
+ReliefRay reliefViewRay(vec2 entryUV, vec3 direction)
+{
+  float descent = max(direction.z, 1e-3f * length(vec2(direction.x, direction.y)));
+  descent = max(descent, 1e-12f);
+  ReliefRay ray;
+  ray.origin = vec3(entryUV.x, entryUV.y, 0.0f);
+  ray.direction = vec3(direction.x / descent, direction.y / descent, 1.0f);
+  return ray;
+}
+
+// The light ray of a hit: from where the ray toward the light leaves the relief
+// (depth 0) down to the hit, so the same searches answer "what does the light meet
+// first". lightDirection points from the hit toward the light in texture-space units
+// (ddepth < 0 when the light is above the surface).
+ReliefRay reliefLightRay(vec3 hitPosition, vec3 lightDirection)
+{
+  float ascent = max(-lightDirection.z, 1e-3f * length(vec2(lightDirection.x, lightDirection.y)));
+  ascent = max(ascent, 1e-12f);
+  float run = hitPosition.z / ascent;
+  ReliefRay ray;
+  ray.origin = vec3(hitPosition.x + lightDirection.x * run, hitPosition.y + lightDirection.y * run, 0.0f);
+  ray.direction = hitPosition - ray.origin;
+  return ray;
+}

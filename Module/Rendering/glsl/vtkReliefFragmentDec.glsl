@@ -1,0 +1,53 @@
+// vtkRelief fragment declarations: uniforms, the interpolated frame, the search, and
+// the per-light shadow query used by VTK's lighting code.
+uniform sampler2D reliefTexture;   // (nx, ny, nz, depth) from vtkReliefTextureFilter
+uniform vec2 reliefTextureSize;    // texels per tile
+uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio
+uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief
+uniform int reliefLinearSteps;
+uniform int reliefBinarySteps;
+uniform int reliefSelfShadowing;
+uniform int reliefDepthCorrection;
+uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
+uniform mat4 reliefVCDCMatrix;
+in vec3 reliefPositionVC;
+in vec3 reliefNormalVC;
+in vec3 reliefTangentVC;
+in vec2 reliefTCoord;
+in vec2 reliefTextureScaleVC;
+
+// Derivatives of the entry coordinates, taken once outside the search loops so every
+// height read inside them can pick its mipmap level.
+vec2 reliefGradX;
+vec2 reliefGradY;
+#define RELIEF_DEPTH(uv) textureGrad(reliefTexture, uv, reliefGradX, reliefGradY).a
+
+//VTK::Relief::Common
+//VTK::Relief::Search
+
+vec3 reliefFrameT;
+vec3 reliefFrameB;
+vec3 reliefFrameN;
+vec2 reliefScale;
+ReliefHit reliefViewHit;
+
+// A view-space direction in texture-space units (du, dv, ddepth); depth grows inward.
+vec3 reliefToTexture(vec3 directionVC)
+{
+  return vec3(dot(directionVC, reliefFrameT) / reliefScale.x,
+    dot(directionVC, reliefFrameB) / reliefScale.y,
+    -dot(directionVC, reliefFrameN) / reliefDepthScale);
+}
+
+// Visibility (0 or 1) of a light seen from the hit, toLightVC pointing to the light.
+float reliefShadow(vec3 toLightVC)
+{
+  if (reliefSelfShadowing == 0 || reliefDepthScale <= 0.0)
+  {
+    return 1.0;
+  }
+  return reliefLightVisibility(reliefViewHit.position, reliefToTexture(toLightVC), reliefLinearSteps);
+}
+
+// VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit.
+#define tcoordVCVSOutput reliefHitTCoord

@@ -1,0 +1,40 @@
+  // frame: the fragment's view ray in relief texture space (seed 000 s3.4)
+  reliefGradX = dFdx(reliefTCoord);
+  reliefGradY = dFdy(reliefTCoord);
+  reliefFrameN = normalize(reliefNormalVC);
+  if (gl_FrontFacing == false) { reliefFrameN = -reliefFrameN; }
+  reliefFrameT = normalize(reliefTangentVC - reliefFrameN * dot(reliefFrameN, reliefTangentVC));
+  reliefFrameB = cross(reliefFrameN, reliefFrameT);
+  reliefScale = reliefTextureScaleVC;
+  if (abs(reliefScale.x) < 1e-20) { reliefScale.x = 1e-20; }
+  if (abs(reliefScale.y) < 1e-20) { reliefScale.y = 1e-20; }
+  vec3 reliefViewVC = cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVC);
+
+  // search
+  if (reliefDepthScale > 0.0)
+  {
+    ReliefRay reliefViewRayTS = reliefViewRay(reliefTCoord, reliefToTexture(reliefViewVC));
+    reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
+  }
+  else
+  {
+    reliefViewHit.position = vec3(reliefTCoord, 0.0);
+    reliefViewHit.t = 0.0;
+    reliefViewHit.hit = true;
+    reliefViewHit.samples = 0;
+  }
+
+  // shade: hit point, relief normal rebuilt with the live scales, true depth
+  vec2 reliefHitTCoord = reliefViewHit.position.xy;
+  float reliefDescent = max(-dot(reliefViewVC, reliefFrameN), 1e-6);
+  vec3 reliefHitVC = reliefPositionVC +
+    reliefViewVC * (reliefViewHit.position.z * max(reliefDepthScale, 0.0) / reliefDescent);
+  vec4 reliefTexel = textureGrad(reliefTexture, reliefHitTCoord, reliefGradX, reliefGradY);
+  vec2 reliefSlope = reliefTexel.xy / (max(reliefTexel.z, 1e-4) * reliefNormalRatio) *
+    reliefTextureSize * max(reliefDepthScale, 0.0) / reliefScale;
+  vec3 reliefNormalTS = normalize(vec3(reliefSlope, 1.0));
+  vec3 reliefLitNormalVC = normalize(reliefFrameT * reliefNormalTS.x +
+    reliefFrameB * reliefNormalTS.y + reliefFrameN * reliefNormalTS.z);
+  vec4 reliefHitDC = reliefVCDCMatrix * vec4(reliefHitVC, 1.0);
+  float reliefFragDepth = reliefDepthCorrection == 1 ?
+    clamp(0.5 * reliefHitDC.z / reliefHitDC.w + 0.5, 0.0, 1.0) : gl_FragCoord.z;

@@ -1,0 +1,111 @@
+// vtkRelief: ray/height-field searches. One signature, one result (ReliefHit);
+// the mapper selects the method at shader build time with RELIEF_SEARCH_* defines.
+// Every search finds the first t in [0, 1] where the ray is on or below the field.
+// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules.
+
+struct ReliefBracket
+{
+  float above;  // last parameter known above the field
+  float below;  // first parameter found on or below it
+  bool found;
+  int samples;
+};
+
+// Fixed-step linear search (Policarpo et al. 2005): the first of `steps` equally
+// spaced samples that is below the field. Thin features narrower than a step are missed.
+ReliefBracket reliefLinearBracket(ReliefRay ray, int steps)
+{
+  ReliefBracket bracket;
+  bracket.above = 0.0f;
+  bracket.below = 1.0f;
+  bracket.found = false;
+  bracket.samples = 0;
+  float dt = 1.0f / float(steps);
+  for (int i = 1; i <= steps; ++i)
+  {
+    float t = float(i) * dt;
+    bracket.samples += 1;
+    if (reliefBelowField(reliefRayAt(ray, t)))
+    {
+      bracket.below = t;
+      bracket.found = true;
+      break;
+    }
+    bracket.above = t;
+  }
+  return bracket;
+}
+
+ReliefHit reliefHitAt(ReliefRay ray, float t, bool found, int samples)
+{
+  ReliefHit result;
+  result.t = t;
+  result.position = reliefRayAt(ray, t);
+  result.hit = found;
+  result.samples = samples;
+  return result;
+}
+
+// Linear search alone: the hit is the first sample below the field.
+ReliefHit reliefSearchLinear(ReliefRay ray, int linearSteps)
+{
+  ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
+  return reliefHitAt(ray, bracket.below, bracket.found, bracket.samples);
+}
+
+// Bisection inside a bracket: halves the interval `steps` times and returns its middle.
+ReliefHit reliefBinaryRefine(ReliefRay ray, ReliefBracket bracket, int steps)
+{
+  float above = bracket.above;
+  float below = bracket.below;
+  int samples = bracket.samples;
+  for (int i = 0; i < steps; ++i)
+  {
+    float middle = 0.5f * (above + below);
+    samples += 1;
+    if (reliefBelowField(reliefRayAt(ray, middle)))
+    {
+      below = middle;
+    }
+    else
+    {
+      above = middle;
+    }
+  }
+  return reliefHitAt(ray, 0.5f * (above + below), bracket.found, samples);
+}
+
+// Linear then binary search (Policarpo et al. 2005; 10 + 5 steps by default).
+ReliefHit reliefSearchLinearBinary(ReliefRay ray, int linearSteps, int binarySteps)
+{
+  ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
+  if (!bracket.found)
+  {
+    return reliefHitAt(ray, 1.0f, false, bracket.samples);
+  }
+  return reliefBinaryRefine(ray, bracket, binarySteps);
+}
+
+// The method chosen at build time.
+ReliefHit reliefSearch(ReliefRay ray, int linearSteps, int binarySteps)
+{
+#if defined(RELIEF_SEARCH_LINEAR)
+  return reliefSearchLinear(ray, linearSteps);
+#else
+  return reliefSearchLinearBinary(ray, linearSteps, binarySteps);
+#endif
+}
+
+// Self-shadowing: is the hit lit by a light in texture-space direction lightDirection?
+// The light ray is searched from where it enters the relief down to the hit; meeting
+// the field a step or more before the hit means the light is blocked.
+float reliefLightVisibility(vec3 hitPosition, vec3 lightDirection, int steps)
+{
+  if (lightDirection.z >= 0.0f)
+  {
+    return 0.0f; // the light is below the surface plane
+  }
+  ReliefRay ray = reliefLightRay(hitPosition, lightDirection);
+  ReliefBracket bracket = reliefLinearBracket(ray, steps);
+  return bracket.below < 1.0f - 0.5f / float(steps) ? 0.0f : 1.0f;
+}

@@ -1,0 +1,13 @@
+// vtkRelief vertex inputs and outputs of the tangent frame (seed 000 s3.4).
+//VTK::Relief::CameraDec
+in vec3 reliefNormalMC;
+in vec3 reliefTangentMC;
+in vec2 reliefTCoordMC;
+in vec2 reliefTextureScaleMC; // model length of one texture unit along tangent, bitangent
+uniform mat3 reliefDirectionMatrix; // model to view for directions, without VBO shift/scale
+uniform mat3 reliefNormalMatrix;    // its inverse transpose
+out vec3 reliefPositionVC;
+out vec3 reliefNormalVC;
+out vec3 reliefTangentVC;
+out vec2 reliefTCoord;
+out vec2 reliefTextureScaleVC;

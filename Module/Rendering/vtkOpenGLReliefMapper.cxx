@@ -1,0 +1,527 @@
+#include "vtkOpenGLReliefMapper.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkReliefTangentFrameFilter.h"
+#include "vtkReliefTextureFilter.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkReliefCommon.h"
+#include "vtkReliefFragmentDec.h"
+#include "vtkReliefFragmentImpl.h"
+#include "vtkReliefSearch.h"
+#include "vtkReliefVertexDec.h"
+#include "vtkReliefVertexImpl.h"
+
+#include <algorithm>
+#include <regex>
+
+vtkStandardNewMacro(vtkOpenGLReliefMapper);
+
+namespace
+{
+constexpr int MinimumLinearSteps = 1;
+constexpr int MaximumLinearSteps = 512;
+constexpr int MaximumBinarySteps = 32;
+
+// Shader inputs of the relief frame, bound by name to the relief surface's arrays.
+constexpr const char* NormalAttribute = "reliefNormalMC";
+constexpr const char* TangentAttribute = "reliefTangentMC";
+constexpr const char* TCoordAttribute = "reliefTCoordMC";
+constexpr const char* TextureScaleAttribute = "reliefTextureScaleMC";
+
+// Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
+void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
+{
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      result->SetElement(row, column, matrix->GetElement(row, column));
+    }
+  }
+}
+}
+
+vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkOpenGLReliefMapper::~vtkOpenGLReliefMapper() = default;
+
+int vtkOpenGLReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::SetSearchMethod(int method)
+{
+  if (method != LINEAR && method != LINEAR_BINARY)
+  {
+    vtkErrorMacro("Unknown search method " << method << "; use SetSearchMethodToLinear() or "
+                                              "SetSearchMethodToLinearBinary().");
+    return;
+  }
+  if (method != this->SearchMethod)
+  {
+    this->SearchMethod = method;
+    this->ShaderOptionsTime.Modified();
+  }
+}
+
+const char* vtkOpenGLReliefMapper::GetSearchMethodAsString()
+{
+  switch (this->SearchMethod)
+  {
+    case LINEAR:
+      return "Linear";
+    default:
+      return "LinearBinary";
+  }
+}
+
+std::string vtkOpenGLReliefMapper::GetSearchDefines()
+{
+  return this->SearchMethod == LINEAR ? "#define RELIEF_SEARCH_LINEAR\n"
+                                      : "#define RELIEF_SEARCH_LINEAR_BINARY\n";
+}
+
+void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
+{
+  int clamped = std::clamp(steps, MinimumLinearSteps, MaximumLinearSteps);
+  if (clamped != steps)
+  {
+    vtkWarningMacro("LinearSteps " << steps << " is out of [" << MinimumLinearSteps << ", "
+                                   << MaximumLinearSteps << "]; using " << clamped << ".");
+  }
+  this->LinearSteps = clamped;
+}
+
+void vtkOpenGLReliefMapper::SetBinarySteps(int steps)
+{
+  int clamped = std::clamp(steps, 0, MaximumBinarySteps);
+  if (clamped != steps)
+  {
+    vtkWarningMacro("BinarySteps " << steps << " is out of [0, " << MaximumBinarySteps
+                                   << "]; using " << clamped << ".");
+  }
+  this->BinarySteps = clamped;
+}
+
+void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
+{
+  this->DepthScale = depthScale;
+  this->WarnedFlatDepthScale = false;
+}
+
+void vtkOpenGLReliefMapper::SetSelfShadowing(bool enabled)
+{
+  this->SelfShadowing = enabled;
+}
+
+void vtkOpenGLReliefMapper::SetDepthCorrection(bool enabled)
+{
+  this->DepthCorrection = enabled;
+}
+
+void vtkOpenGLReliefMapper::SetDisplayMode(int mode)
+{
+  if (mode != SHADED && mode != SAMPLE_COUNT)
+  {
+    vtkErrorMacro("Unknown display mode " << mode << "; use SetDisplayModeToShaded() or "
+                                             "SetDisplayModeToSampleCount().");
+    return;
+  }
+  this->DisplayMode = mode;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::SetHeightMapConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkOpenGLReliefMapper::SetHeightMapData(vtkImageData* image)
+{
+  this->SetInputDataInternal(1, image);
+}
+
+vtkImageData* vtkOpenGLReliefMapper::GetHeightMap()
+{
+  if (this->GetNumberOfInputConnections(1) == 0)
+  {
+    return nullptr;
+  }
+  return vtkImageData::SafeDownCast(this->GetInputDataObject(1, 0));
+}
+
+vtkReliefTextureFilter* vtkOpenGLReliefMapper::GetReliefTextureFilter()
+{
+  return this->ReliefTextureFilter;
+}
+
+vtkPolyData* vtkOpenGLReliefMapper::GetReliefSurface()
+{
+  return this->TangentFrame->GetOutput();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLReliefMapper::UpdateReliefSurface()
+{
+  vtkPolyData* input = this->CurrentInput;
+  if (!input->GetPointData()->GetTCoords())
+  {
+    // once per change of the input, not once per frame
+    if (input->GetMTime() != this->CheckedSurfaceTime)
+    {
+      this->CheckedSurfaceTime = input->GetMTime();
+      vtkErrorMacro(<< vtkReliefTangentFrameFilter::MissingTextureCoordinatesAdvice()
+                    << " The mesh is drawn without relief.");
+    }
+    return false;
+  }
+  this->TangentFrame->SetInputData(input);
+  this->TangentFrame->Update();
+  if (!this->TangentFrame->GetHasTangentFrame())
+  {
+    return false;
+  }
+  this->CurrentInput = this->TangentFrame->GetOutput();
+  return true;
+}
+
+bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
+{
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    this->GetInputAlgorithm(1, 0)->Update();
+  }
+  vtkImageData* heights = this->GetHeightMap();
+  if (!heights)
+  {
+    if (!this->WarnedMissingHeightMap)
+    {
+      this->WarnedMissingHeightMap = true;
+      vtkWarningMacro("No height map: the mesh is drawn without relief. Give one with "
+                      "SetHeightMapConnection() or SetHeightMapData().");
+    }
+    return false;
+  }
+  this->WarnedMissingHeightMap = false;
+
+  this->ReliefTextureFilter->SetInputData(heights);
+  this->ReliefTextureFilter->Update();
+  vtkImageData* relief = this->ReliefTextureFilter->GetOutput();
+  vtkDataArray* texels = relief->GetPointData()->GetScalars();
+  if (!texels || relief->GetNumberOfPoints() == 0)
+  {
+    return false; // the filter has said why
+  }
+
+  if (!this->ReliefTexture)
+  {
+    this->ReliefTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  if (this->ReliefTexture->GetHandle() != 0 &&
+    this->ReliefTextureUploadTime > relief->GetMTime())
+  {
+    return true;
+  }
+
+  int dimensions[3];
+  relief->GetDimensions(dimensions);
+  this->ReliefTexture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
+  this->ReliefTexture->SetWrapS(vtkTextureObject::Repeat);
+  this->ReliefTexture->SetWrapT(vtkTextureObject::Repeat);
+  this->ReliefTexture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
+  this->ReliefTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!this->ReliefTexture->Create2DFromRaw(dimensions[0], dimensions[1],
+        texels->GetNumberOfComponents(), texels->GetDataType(), texels->GetVoidPointer(0)))
+  {
+    vtkErrorMacro("Could not upload the " << dimensions[0] << "x" << dimensions[1]
+                                          << " relief texture to the GPU.");
+    return false;
+  }
+  // vtkTextureObject makes mipmaps for cube maps only
+  this->ReliefTexture->Activate();
+  glGenerateMipmap(GL_TEXTURE_2D);
+  this->ReliefTexture->Deactivate();
+  this->ReliefTextureUploadTime.Modified();
+  return true;
+}
+
+void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
+{
+  // remapping calls Modified(), which rebuilds the buffers: only when names change
+  vtkPointData* pointData = this->CurrentInput->GetPointData();
+  const std::map<std::string, std::string> wanted = relief
+    ? std::map<std::string, std::string>{ { NormalAttribute, pointData->GetNormals()->GetName() },
+        { TangentAttribute, pointData->GetTangents()->GetName() },
+        { TCoordAttribute, pointData->GetTCoords()->GetName() },
+        { TextureScaleAttribute, vtkReliefTangentFrameFilter::TextureScaleArrayName() } }
+    : std::map<std::string, std::string>{};
+  std::map<std::string, std::string> current;
+  for (const auto& attribute : this->ExtraAttributes)
+  {
+    current[attribute.first] = attribute.second.DataArrayName;
+  }
+  if (current == wanted)
+  {
+    return;
+  }
+  this->RemoveAllVertexAttributeMappings();
+  for (const auto& attribute : wanted)
+  {
+    this->MapDataArrayToVertexAttribute(attribute.first.c_str(), attribute.second.c_str(),
+      vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  }
+}
+
+bool vtkOpenGLReliefMapper::UpdateRelief(vtkRenderer* ren)
+{
+  const bool relief = this->UpdateReliefSurface() && this->UpdateReliefTexture(ren);
+  if (relief && this->DepthScale <= 0.0 && !this->WarnedFlatDepthScale)
+  {
+    this->WarnedFlatDepthScale = true;
+    vtkWarningMacro("DepthScale is " << this->DepthScale
+                                     << ": the relief is flat. Set a positive world depth.");
+  }
+  return relief;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
+{
+  const bool relief = this->UpdateRelief(ren);
+  if (relief != this->DrawingRelief)
+  {
+    this->DrawingRelief = relief;
+    this->ShaderOptionsTime.Modified();
+  }
+  this->MapReliefAttributes(relief);
+  this->Superclass::RenderPieceStart(ren, actor);
+  if (this->DrawingRelief)
+  {
+    this->ReliefTexture->Activate();
+  }
+}
+
+void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->DrawingRelief)
+  {
+    this->ReliefTexture->Deactivate();
+  }
+  this->Superclass::RenderPieceFinish(ren, actor);
+}
+
+bool vtkOpenGLReliefMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) ||
+    cellBO.ShaderSourceTime < this->ShaderOptionsTime;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  const bool reliefPrimitive = this->DrawingRelief &&
+    this->LastBoundBO == &this->Primitives[PrimitiveTris] &&
+    actor->GetProperty()->GetRepresentation() == VTK_SURFACE;
+  if (!reliefPrimitive)
+  {
+    this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+    return;
+  }
+  const int lightComplexity = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity;
+
+  // Insertions keep VTK's tags, so VTK's own code still lands before ours.
+  std::string vertexSource = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vertexSource, "//VTK::PositionVC::Dec",
+    std::string("//VTK::PositionVC::Dec\n") + vtkReliefVertexDec);
+  vtkShaderProgram::Substitute(vertexSource, "//VTK::CustomEnd::Impl",
+    std::string(vtkReliefVertexImpl) + "\n  //VTK::CustomEnd::Impl");
+  shaders[vtkShader::Vertex]->SetSource(vertexSource);
+
+  std::string declarations = vtkReliefFragmentDec;
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search", vtkReliefSearch);
+  std::string fragmentSource = shaders[vtkShader::Fragment]->GetSource();
+  vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
+    "//VTK::Edges::Dec\n" + this->GetSearchDefines() + declarations);
+  vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
+    std::string(vtkReliefFragmentImpl) + "\n  //VTK::UniformFlow::Impl");
+  vtkShaderProgram::Substitute(
+    fragmentSource, "//VTK::Depth::Impl", "gl_FragDepth = reliefFragDepth;\n");
+  if (lightComplexity > 0)
+  {
+    vtkShaderProgram::Substitute(fragmentSource, "//VTK::Normal::Impl",
+      "//VTK::Normal::Impl\n"
+      "  normalVCVSOutput = reliefLitNormalVC;\n"
+      "  vertexVC = vec4(reliefHitVC, 1.0);\n");
+  }
+  vtkShaderProgram::Substitute(fragmentSource, "//VTK::DepthPeeling::Impl",
+    "if (reliefDisplayMode == 1)\n"
+    "  {\n"
+    "    gl_FragData[0] = vec4(min(float(reliefViewHit.samples), 255.0) / 255.0, 0.0, 0.0, 1.0);\n"
+    "  }\n"
+    "  //VTK::DepthPeeling::Impl");
+  shaders[vtkShader::Fragment]->SetSource(fragmentSource);
+
+  this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+
+  // VTK declares the model-to-view matrix only for lit surfaces.
+  vertexSource = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vertexSource, "//VTK::Relief::CameraDec",
+    vertexSource.find("uniform mat4 MCVCMatrix;") == std::string::npos
+      ? "uniform mat4 MCVCMatrix;"
+      : "");
+  shaders[vtkShader::Vertex]->SetSource(vertexSource);
+
+  this->ReplaceReliefLightVisibility(shaders[vtkShader::Fragment], lightComplexity);
+}
+
+void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity)
+{
+  if (lightComplexity < 2)
+  {
+    return; // unlit, or a headlight: it sees exactly what the camera sees, no self-shadow
+  }
+  // Each light's diffuse term of VTK's (non-PBR) lighting code is weighted by the
+  // visibility of that light from the hit; the specular term follows through sign(df).
+  std::string source = fragmentShader->GetSource();
+  const std::regex directional(
+    R"(df = max\(0\.0, dot\(normalVCVSOutput, -lightDirectionVC(\d+)\)\);)");
+  std::string shadowed = std::regex_replace(source, directional,
+    "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC$1)) * "
+    "reliefShadow(-lightDirectionVC$1);");
+  const std::string positional =
+    "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC));";
+  const bool anyPositional = shadowed.find(positional) != std::string::npos;
+  vtkShaderProgram::Substitute(shadowed, positional,
+    "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC)) * "
+    "reliefShadow(-vertLightDirectionVC);");
+  if (shadowed == source && !anyPositional)
+  {
+    vtkWarningMacro("Self-shadowing is not available with this lighting model "
+                    "(physically based interpolation); the relief is lit without it.");
+    return;
+  }
+  fragmentShader->SetSource(shadowed);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!this->DrawingRelief || !program->IsUniformUsed("reliefTexture"))
+  {
+    return;
+  }
+  program->SetUniformi("reliefTexture", this->ReliefTexture->GetTextureUnit());
+  const float textureSize[2] = { static_cast<float>(this->ReliefTexture->GetWidth()),
+    static_cast<float>(this->ReliefTexture->GetHeight()) };
+  program->SetUniform2f("reliefTextureSize", textureSize);
+  program->SetUniformf(
+    "reliefNormalRatio", static_cast<float>(this->ReliefTextureFilter->GetDepthToTexelRatio()));
+  program->SetUniformf("reliefDepthScale", static_cast<float>(std::max(this->DepthScale, 0.0)));
+  program->SetUniformi("reliefLinearSteps", this->LinearSteps);
+  program->SetUniformi("reliefBinarySteps", this->BinarySteps);
+  program->SetUniformi("reliefSelfShadowing", this->SelfShadowing ? 1 : 0);
+  program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
+  program->SetUniformi("reliefDisplayMode", this->DisplayMode);
+}
+
+void vtkOpenGLReliefMapper::SetCameraShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, actor);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!this->DrawingRelief || !program->IsUniformUsed("reliefVCDCMatrix"))
+  {
+    return;
+  }
+  vtkMatrix4x4* worldToView;
+  vtkMatrix3x3* normalWorldToView;
+  vtkMatrix4x4* viewToDisplay;
+  vtkMatrix4x4* worldToDisplay;
+  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
+    ->GetKeyMatrices(ren, worldToView, normalWorldToView, viewToDisplay, worldToDisplay);
+  program->SetUniformMatrix("reliefVCDCMatrix", viewToDisplay);
+
+  // Directions in model units, free of the position VBO's shift and scale.
+  vtkNew<vtkMatrix4x4> modelToView;
+  if (actor->GetIsIdentity())
+  {
+    modelToView->DeepCopy(worldToView);
+  }
+  else
+  {
+    vtkMatrix4x4* modelToWorld;
+    vtkMatrix3x3* normalModelToWorld;
+    static_cast<vtkOpenGLActor*>(actor)->GetKeyMatrices(modelToWorld, normalModelToWorld);
+    vtkMatrix4x4::Multiply4x4(modelToWorld, worldToView, modelToView);
+  }
+  // key matrices are stored transposed: the inverse transpose of the GLSL matrix is
+  // stored as the transpose of the stored matrix's inverse
+  vtkNew<vtkMatrix3x3> directions;
+  UpperLeft(modelToView, directions);
+  vtkNew<vtkMatrix3x3> normals;
+  vtkMatrix3x3::Invert(directions, normals);
+  normals->Transpose();
+  program->SetUniformMatrix("reliefDirectionMatrix", directions);
+  program->SetUniformMatrix("reliefNormalMatrix", normals);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->ReliefTexture)
+  {
+    this->ReliefTexture->ReleaseGraphicsResources(window);
+  }
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SearchMethod: " << this->GetSearchMethodAsString() << "\n";
+  os << indent << "LinearSteps: " << this->LinearSteps << "\n";
+  os << indent << "BinarySteps: " << this->BinarySteps << "\n";
+  os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "SelfShadowing: " << this->SelfShadowing << "\n";
+  os << indent << "DepthCorrection: " << this->DepthCorrection << "\n";
+  os << indent << "DisplayMode: " << (this->DisplayMode == SAMPLE_COUNT ? "SampleCount" : "Shaded")
+     << "\n";
+  os << indent << "HeightMap: " << this->GetHeightMap() << "\n";
+  os << indent << "ReliefTextureFilter:\n";
+  this->ReliefTextureFilter->PrintSelf(os, indent.GetNextIndent());
+}

@@ -1,0 +1,177 @@
+/**
+ * @class   vtkOpenGLReliefMapper
+ * @brief   renders a height map as real relief on any mesh with normals and texture coordinates
+ *
+ * Relief mapping (Policarpo, Oliveira and Comba 2005): each fragment follows its view
+ * ray into the height field below the polygon, in texture space, and shades the first
+ * point it meets: self-occlusion, per-pixel lighting with the relief normal, self-shadows
+ * and the hit's true depth, so relief interpenetrates the other actors of the scene.
+ *
+ * Port 0 takes the mesh (point texture coordinates required; normals and tangents are
+ * computed when missing, see vtkReliefTangentFrameFilter). The height map goes to
+ * SetHeightMapConnection() or SetHeightMapData(): any 2D image, turned into a relief
+ * texture by an internal vtkReliefTextureFilter (GetReliefTextureFilter() configures it:
+ * height or depth convention, component). DepthScale is the world depth of the deepest
+ * level. The actor's property (colours, ambient, diffuse, specular, opacity), its
+ * texture (sampled at the hit) and the renderer's lights apply as for any actor.
+ *
+ * Every search method finds the first intersection of the ray with the height field;
+ * the choice is made at shader build time. Setters that change only a uniform
+ * (DepthScale, step counts, SelfShadowing, DepthCorrection, DisplayMode) neither
+ * rebuild the shader nor the buffers.
+ */
+#ifndef vtkOpenGLReliefMapper_h
+#define vtkOpenGLReliefMapper_h
+
+#include "vtkNew.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkReliefRenderingModule.h"
+#include "vtkSmartPointer.h"
+
+class vtkImageData;
+class vtkMatrix3x3;
+class vtkReliefTangentFrameFilter;
+class vtkReliefTextureFilter;
+class vtkTextureObject;
+
+class VTKRELIEFRENDERING_EXPORT vtkOpenGLReliefMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkOpenGLReliefMapper* New();
+  vtkTypeMacro(vtkOpenGLReliefMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum SearchMethods
+  {
+    LINEAR = 0,
+    LINEAR_BINARY = 1
+  };
+
+  ///@{
+  /**
+   * How the view ray meets the height field. LinearBinary (default): LinearSteps fixed
+   * steps, then BinarySteps of bisection. Linear: fixed steps only. Changing the method
+   * rebuilds the shader once.
+   */
+  void SetSearchMethod(int method);
+  vtkGetMacro(SearchMethod, int);
+  void SetSearchMethodToLinear() { this->SetSearchMethod(LINEAR); }
+  void SetSearchMethodToLinearBinary() { this->SetSearchMethod(LINEAR_BINARY); }
+  const char* GetSearchMethodAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Steps of the linear search (1 to 512, default 10) and of the binary refinement
+   * (0 to 32, default 5). Values out of range are clamped, with a warning.
+   */
+  void SetLinearSteps(int steps);
+  vtkGetMacro(LinearSteps, int);
+  void SetBinarySteps(int steps);
+  vtkGetMacro(BinarySteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * World depth of relief depth 1 (s_z). Zero or negative: no relief, the mesh is
+   * rendered flat. Default 0.05.
+   */
+  void SetDepthScale(double depthScale);
+  vtkGetMacro(DepthScale, double);
+  ///@}
+
+  ///@{
+  /// A second texture-space ray toward each light darkens relief in its own shadow. Default on.
+  void SetSelfShadowing(bool enabled);
+  vtkGetMacro(SelfShadowing, bool);
+  vtkBooleanMacro(SelfShadowing, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Write the hit's true depth (default on), so relief interpenetrates other actors.
+   * Off: the polygon's depth, as plain texturing would.
+   */
+  void SetDepthCorrection(bool enabled);
+  vtkGetMacro(DepthCorrection, bool);
+  vtkBooleanMacro(DepthCorrection, bool);
+  ///@}
+
+  enum DisplayModes
+  {
+    SHADED = 0,
+    SAMPLE_COUNT = 1
+  };
+
+  ///@{
+  /**
+   * Shaded (default), or SampleCount: each covered pixel's red channel is
+   * min(255, height samples the view-ray search took) / 255, green and blue 0.
+   */
+  void SetDisplayMode(int mode);
+  vtkGetMacro(DisplayMode, int);
+  void SetDisplayModeToShaded() { this->SetDisplayMode(SHADED); }
+  void SetDisplayModeToSampleCount() { this->SetDisplayMode(SAMPLE_COUNT); }
+  ///@}
+
+  ///@{
+  /// The height map: any 2D image; see vtkReliefTextureFilter for how it is read.
+  void SetHeightMapConnection(vtkAlgorithmOutput* output);
+  void SetHeightMapData(vtkImageData* image);
+  vtkImageData* GetHeightMap();
+  ///@}
+
+  /// The filter that turns the height map into the relief texture, to configure it.
+  vtkReliefTextureFilter* GetReliefTextureFilter();
+
+  /// The mesh as rendered: triangulated, with normals, tangents and texture scale.
+  vtkPolyData* GetReliefSurface();
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkOpenGLReliefMapper();
+  ~vtkOpenGLReliefMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+
+  /// Brings the relief surface and texture up to date; false when relief cannot be drawn.
+  bool UpdateRelief(vtkRenderer* ren);
+  bool UpdateReliefSurface();
+  bool UpdateReliefTexture(vtkRenderer* ren);
+  void MapReliefAttributes(bool relief);
+  void ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity);
+  virtual std::string GetSearchDefines();
+
+  int SearchMethod = LINEAR_BINARY;
+  int LinearSteps = 10;
+  int BinarySteps = 5;
+  double DepthScale = 0.05;
+  bool SelfShadowing = true;
+  bool DepthCorrection = true;
+  int DisplayMode = SHADED;
+
+  vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
+  vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
+  vtkSmartPointer<vtkTextureObject> ReliefTexture;
+  vtkTimeStamp ReliefTextureUploadTime;
+  vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
+  bool DrawingRelief = false;
+  vtkMTimeType CheckedSurfaceTime = 0;
+  bool WarnedMissingHeightMap = false;
+  bool WarnedFlatDepthScale = false;
+
+private:
+  vtkOpenGLReliefMapper(const vtkOpenGLReliefMapper&) = delete;
+  void operator=(const vtkOpenGLReliefMapper&) = delete;
+};
+
+#endif

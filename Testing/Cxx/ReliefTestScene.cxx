@@ -1,0 +1,116 @@
+#include "ReliefTestScene.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkOpenImageIOReader.h"
+#include "vtkPNGReader.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+
+namespace ReliefTestScene
+{
+std::string DataFile(const std::string& name)
+{
+  return std::string(RELIEF_DATA_DIR) + "/" + name;
+}
+
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& name)
+{
+  vtkNew<vtkOpenImageIOReader> reader;
+  reader->SetFileName(DataFile(name).c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+vtkSmartPointer<vtkTexture> ReadTexture(const std::string& name)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(ReadImage(name));
+  texture->InterpolateOn();
+  texture->MipmapOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+vtkSmartPointer<vtkPolyData> Square(double tiles)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-0.5, -0.5, 0.0);
+  plane->SetPoint1(0.5, -0.5, 0.0);
+  plane->SetPoint2(-0.5, 0.5, 0.0);
+  plane->Update();
+  auto square = vtkSmartPointer<vtkPolyData>::New();
+  square->DeepCopy(plane->GetOutput());
+  vtkDataArray* tcoords = square->GetPointData()->GetTCoords();
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    tcoords->SetTuple2(i, tcoords->GetComponent(i, 0) * tiles, tcoords->GetComponent(i, 1) * tiles);
+  }
+  return square;
+}
+
+vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
+  vtkPolyData* surface, const std::string& heightMap, double depthScale)
+{
+  auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+  mapper->SetInputData(surface);
+  mapper->SetHeightMapData(ReadImage(heightMap));
+  mapper->SetDepthScale(depthScale);
+  return mapper;
+}
+
+vtkSmartPointer<vtkActor> ReliefActor(vtkOpenGLReliefMapper* mapper, const std::string& colorTexture)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  if (!colorTexture.empty())
+  {
+    actor->SetTexture(ReadTexture(colorTexture));
+  }
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(0.85);
+  actor->GetProperty()->SetSpecular(0.2);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  return actor;
+}
+
+vtkSmartPointer<vtkRenderer> LitRenderer(vtkRenderWindow* window, int width, int height)
+{
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(0.1, 0.12, 0.16);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(-1.0, 1.0, 1.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->PositionalOff();
+  renderer->AddLight(light);
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  return renderer;
+}
+
+void ViewSquare(vtkRenderer* renderer, double elevation)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->Elevation(elevation - 90.0);
+  camera->OrthogonalizeViewUp();
+  camera->SetViewAngle(45.0);
+  renderer->ResetCamera();
+  camera->Dolly(1.3);
+  renderer->ResetCameraClippingRange();
+}
+}
