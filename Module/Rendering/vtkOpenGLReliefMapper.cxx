@@ -404,6 +404,17 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   shaders[vtkShader::Vertex]->SetSource(vertexSource);
 
   this->ReplaceReliefLightVisibility(shaders[vtkShader::Fragment], lightComplexity);
+  this->ReplaceReliefTextureReads(shaders[vtkShader::Fragment]);
+}
+
+void vtkOpenGLReliefMapper::ReplaceReliefTextureReads(vtkShader* fragmentShader)
+{
+  // VTK reads the actor's textures with implicit derivatives, which jump wherever the
+  // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
+  // them with the derivatives of the entry coordinates, as the relief itself is read.
+  const std::regex implicitRead(R"(texture\((\w+), tcoordVCVSOutput\))");
+  fragmentShader->SetSource(std::regex_replace(fragmentShader->GetSource(), implicitRead,
+    "textureGrad($1, tcoordVCVSOutput, reliefGradX, reliefGradY)"));
 }
 
 void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity)

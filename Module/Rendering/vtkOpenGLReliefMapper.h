@@ -149,6 +149,7 @@ protected:
   bool UpdateReliefTexture(vtkRenderer* ren);
   void MapReliefAttributes(bool relief);
   void ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity);
+  void ReplaceReliefTextureReads(vtkShader* fragmentShader);
   virtual std::string GetSearchDefines();
 
   int SearchMethod = LINEAR_BINARY;

@@ -7,14 +7,15 @@
 #include "vtkLight.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
-#include "vtkPNGReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSuperquadricSource.h"
 #include "vtkTexture.h"
+#include "vtkWindowToImageFilter.h"
 
 namespace ReliefTestScene
 {
@@ -41,6 +42,17 @@ vtkSmartPointer<vtkTexture> ReadTexture(const std::string& name)
   return texture;
 }
 
+void TileTextureCoordinates(vtkPolyData* surface, double uTiles, double vTiles)
+{
+  vtkDataArray* tcoords = surface->GetPointData()->GetTCoords();
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    tcoords->SetTuple2(
+      i, tcoords->GetComponent(i, 0) * uTiles, tcoords->GetComponent(i, 1) * vTiles);
+  }
+  tcoords->Modified();
+}
+
 vtkSmartPointer<vtkPolyData> Square(double tiles)
 {
   vtkNew<vtkPlaneSource> plane;
@@ -50,12 +62,23 @@ vtkSmartPointer<vtkPolyData> Square(double tiles)
   plane->Update();
   auto square = vtkSmartPointer<vtkPolyData>::New();
   square->DeepCopy(plane->GetOutput());
-  vtkDataArray* tcoords = square->GetPointData()->GetTCoords();
-  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
-  {
-    tcoords->SetTuple2(i, tcoords->GetComponent(i, 0) * tiles, tcoords->GetComponent(i, 1) * tiles);
-  }
+  TileTextureCoordinates(square, tiles, tiles);
   return square;
+}
+
+vtkSmartPointer<vtkPolyData> Torus()
+{
+  vtkNew<vtkSuperquadricSource> source;
+  source->ToroidalOn();
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(24);
+  source->SetThickness(0.4);
+  source->SetSize(0.5);
+  source->Update();
+  auto torus = vtkSmartPointer<vtkPolyData>::New();
+  torus->DeepCopy(source->GetOutput());
+  TileTextureCoordinates(torus, 6.0, 2.0);
+  return torus;
 }
 
 vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
@@ -100,17 +123,32 @@ vtkSmartPointer<vtkRenderer> LitRenderer(vtkRenderWindow* window, int width, int
   return renderer;
 }
 
-void ViewSquare(vtkRenderer* renderer, double elevation)
+void ViewSquare(vtkRenderer* renderer, double angle)
 {
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetPosition(0.0, 0.0, 1.0);
   camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->Elevation(elevation - 90.0);
+  camera->Elevation(-angle);
   camera->OrthogonalizeViewUp();
   camera->SetViewAngle(45.0);
   renderer->ResetCamera();
   camera->Dolly(1.3);
   renderer->ResetCameraClippingRange();
+}
+}
+
+namespace ReliefTestScene
+{
+std::vector<unsigned char> Pixels(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  vtkDataArray* scalars = capture->GetOutput()->GetPointData()->GetScalars();
+  const auto* first = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
+  return std::vector<unsigned char>(first, first + scalars->GetDataSize());
 }
 }

@@ -7,6 +7,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkActor;
 class vtkImageData;
@@ -27,8 +28,14 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& name);
 /// A colour texture of Data/, repeating, interpolated and mipmapped.
 vtkSmartPointer<vtkTexture> ReadTexture(const std::string& name);
 
+/// Multiplies the texture coordinates of `surface` by (uTiles, vTiles), in place.
+void TileTextureCoordinates(vtkPolyData* surface, double uTiles, double vTiles);
+
 /// A unit square in the xy plane with texture coordinates [0, tiles]^2 and +z normals.
 vtkSmartPointer<vtkPolyData> Square(double tiles = 1.0);
+
+/// A torus (toroidal superquadric) with texture coordinates tiled for square texels.
+vtkSmartPointer<vtkPolyData> Torus();
 
 /// A relief mapper on `surface` with `heightMap` of Data/ and a depth scale.
 vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
@@ -43,8 +50,11 @@ vtkSmartPointer<vtkActor> ReliefActor(
 /// given size.
 vtkSmartPointer<vtkRenderer> LitRenderer(vtkRenderWindow* window, int width, int height);
 
-/// Looks at the unit square from `elevation` degrees above its plane (90 = head-on).
-void ViewSquare(vtkRenderer* renderer, double elevation);
+/// Looks at the unit square `angle` degrees away from its normal (0 = head-on).
+void ViewSquare(vtkRenderer* renderer, double angle);
+
+/// The window's pixels, RGB, bottom row first.
+std::vector<unsigned char> Pixels(vtkRenderWindow* window);
 }
 
 #endif

@@ -1,5 +1,5 @@
-// Relief on a flat square seen at 45 degrees: self-occlusion, lighting and shadows of
-// the brick wall must look like real geometry.
+// Bricks on a flat square seen 45 degrees away from its normal: self-occlusion,
+// per-pixel lighting and self-shadows of the relief must read as real geometry.
 #include "ReliefTestScene.h"
 
 #include "vtkActor.h"
@@ -13,10 +13,10 @@ int TestReliefPlane45(int argc, char* argv[])
 {
   vtkNew<vtkRenderWindow> window;
   auto renderer = ReliefTestScene::LitRenderer(window, 400, 300);
-  auto mapper = ReliefTestScene::ReliefMapper(ReliefTestScene::Square(2.0), "bricks_height.png", 0.04);
+  auto mapper =
+    ReliefTestScene::ReliefMapper(ReliefTestScene::Square(2.0), "bricks_height.png", 0.04);
   renderer->AddActor(ReliefTestScene::ReliefActor(mapper, "bricks_color.png"));
   ReliefTestScene::ViewSquare(renderer, 45.0);
   window->Render();
-  int result = vtkRegressionTestImage(window);
-  return !result;
+  return !vtkRegressionTestImage(window);
 }

@@ -26,6 +26,9 @@
 
   // shade: hit point, relief normal rebuilt with the live scales, true depth
   vec2 reliefHitTCoord = reliefViewHit.position.xy;
+  // Textures repeat with period 1: bring the hit back within a tile of the entry, since
+  // Mesa's llvmpipe stalls on mipmapped 8-bit reads far from it (grazing rays run far).
+  reliefHitTCoord -= floor(reliefHitTCoord - reliefTCoord);
   float reliefDescent = max(-dot(reliefViewVC, reliefFrameN), 1e-6);
   vec3 reliefHitVC = reliefPositionVC +
     reliefViewVC * (reliefViewHit.position.z * max(reliefDepthScale, 0.0) / reliefDescent);

@@ -97,15 +97,21 @@ ReliefHit reliefSearch(ReliefRay ray, int linearSteps, int binarySteps)
 }
 
 // Self-shadowing: is the hit lit by a light in texture-space direction lightDirection?
-// The light ray is searched from where it enters the relief down to the hit; meeting
-// the field a step or more before the hit means the light is blocked.
+// The light ray is searched from where it enters the relief down to a point half a
+// linear step above the hit: the search put the hit within that of the surface, so
+// meeting the field on the way means the light is blocked, not that the hit is.
 float reliefLightVisibility(vec3 hitPosition, vec3 lightDirection, int steps)
 {
   if (lightDirection.z >= 0.0f)
   {
     return 0.0f; // the light is below the surface plane
   }
-  ReliefRay ray = reliefLightRay(hitPosition, lightDirection);
-  ReliefBracket bracket = reliefLinearBracket(ray, steps);
-  return bracket.below < 1.0f - 0.5f / float(steps) ? 0.0f : 1.0f;
+  float bias = 0.5f / float(steps);
+  if (hitPosition.z <= bias)
+  {
+    return 1.0f; // nothing of the relief rises above its top
+  }
+  vec3 target = vec3(hitPosition.x, hitPosition.y, hitPosition.z - bias);
+  ReliefBracket bracket = reliefLinearBracket(reliefLightRay(target, lightDirection), steps);
+  return bracket.found ? 0.0f : 1.0f;
 }
