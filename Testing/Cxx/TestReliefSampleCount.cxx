@@ -1,0 +1,95 @@
+// SampleCount display mode, the measure of cost: every covered pixel reports the height
+// samples its view ray took, within the bounds of the search method; switching the
+// method rebuilds the shader, while uniform-only setters leave the mapper unmodified.
+#include "ReliefTestScene.h"
+
+#include "vtkActor.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <iostream>
+
+namespace
+{
+struct Counts
+{
+  int Pixels = 0;
+  int Minimum = 256;
+  int Maximum = 0;
+  double Mean = 0.0;
+};
+
+Counts SampleCounts(vtkRenderWindow* window)
+{
+  window->Render();
+  Counts counts;
+  const std::vector<unsigned char> pixels = ReliefTestScene::Pixels(window);
+  double sum = 0.0;
+  for (size_t i = 0; i + 2 < pixels.size(); i += 3)
+  {
+    if (pixels[i + 2] > 0 || pixels[i + 1] > 0)
+    {
+      continue; // background
+    }
+    ++counts.Pixels;
+    sum += pixels[i];
+    counts.Minimum = std::min<int>(counts.Minimum, pixels[i]);
+    counts.Maximum = std::max<int>(counts.Maximum, pixels[i]);
+  }
+  counts.Mean = counts.Pixels ? sum / counts.Pixels : 0.0;
+  std::cout << "samples per pixel: " << counts.Minimum << " to " << counts.Maximum << ", mean "
+            << counts.Mean << " over " << counts.Pixels << " pixels\n";
+  return counts;
+}
+}
+
+int TestReliefSampleCount(int, char*[])
+{
+  vtkNew<vtkRenderWindow> window;
+  auto renderer = ReliefTestScene::LitRenderer(window, 200, 150);
+  renderer->SetBackground(0.0, 0.0, 1.0);
+  auto mapper = ReliefTestScene::ReliefMapper(ReliefTestScene::Square(2.0), "bricks_height.png", 0.05);
+  mapper->SetDisplayModeToSampleCount();
+  renderer->AddActor(ReliefTestScene::ReliefActor(mapper, "bricks_color.png"));
+  ReliefTestScene::ViewSquare(renderer, 45.0);
+  int failures = 0;
+  auto check = [&failures](bool condition, const char* what) {
+    if (!condition)
+    {
+      std::cerr << "Sample count check failed: " << what << "\n";
+      ++failures;
+    }
+  };
+
+  // LinearBinary 10 + 5: the linear search stops at its first hit (1 to 10 samples;
+  // at least 2 here since no texel is at depth 0.1 or less), then bisects 5 times.
+  Counts linearBinary = SampleCounts(window);
+  check(linearBinary.Pixels > 5000, "the square covers the view");
+  check(linearBinary.Minimum >= 6 && linearBinary.Maximum <= 15, "LinearBinary takes 6 to 15");
+
+  const vtkMTimeType before = mapper->GetMTime();
+  mapper->SetDepthScale(0.02);
+  mapper->SetLinearSteps(20);
+  mapper->SetBinarySteps(3);
+  mapper->SetSelfShadowing(false);
+  mapper->SetDepthCorrection(false);
+  check(mapper->GetMTime() == before, "uniform-only setters do not modify the mapper");
+  Counts moreSteps = SampleCounts(window);
+  check(moreSteps.Minimum >= 4 && moreSteps.Maximum <= 23, "LinearBinary 20 + 3 takes 4 to 23");
+  check(moreSteps.Maximum > 15, "the new step counts reach the shader");
+
+  mapper->SetSearchMethodToLinear();
+  mapper->SetLinearSteps(10);
+  Counts linear = SampleCounts(window);
+  check(linear.Minimum >= 1 && linear.Maximum <= 10, "Linear takes 1 to 10");
+  check(linear.Mean < linearBinary.Mean, "Linear is cheaper than LinearBinary");
+
+  mapper->SetSearchMethodToLinearBinary();
+  mapper->SetBinarySteps(5);
+  mapper->SetDepthScale(0.05);
+  Counts again = SampleCounts(window);
+  check(again.Mean == linearBinary.Mean, "switching back gives the same cost");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
