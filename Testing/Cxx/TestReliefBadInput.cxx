@@ -3,7 +3,7 @@
 // The window is read back in SampleCount mode on a blue background: relief pixels are
 // pure red (the sample count), plain pixels are the actor's green.
 #include "ReliefEventRecorder.h"
-#include "ReliefTestScene.h"
+#include "ReliefScene.h"
 
 #include "vtkActor.h"
 #include "vtkFloatArray.h"
@@ -56,19 +56,19 @@ Outcome Render(vtkPolyData* surface, vtkOpenGLReliefMapper* mapper)
   mapper->SetDisplayModeToSampleCount();
 
   vtkNew<vtkRenderWindow> window;
-  auto renderer = ReliefTestScene::LitRenderer(window, 160, 120);
+  auto renderer = ReliefScene::LitRenderer(window, 160, 120);
   renderer->SetBackground(0.0, 0.0, 1.0);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.0, 1.0, 0.0);
   actor->GetProperty()->SetAmbient(1.0);
   renderer->AddActor(actor);
-  ReliefTestScene::ViewSquare(renderer, 30.0);
+  ReliefScene::ViewSquare(renderer, 30.0);
   window->Render();
   window->Render(); // messages come once, not once per frame
 
   Outcome outcome;
-  const std::vector<unsigned char> pixels = ReliefTestScene::Pixels(window);
+  const std::vector<unsigned char> pixels = ReliefScene::Pixels(window);
   for (size_t i = 0; i + 2 < pixels.size(); i += 3)
   {
     const int r = pixels[i], g = pixels[i + 1], b = pixels[i + 2];
@@ -126,7 +126,7 @@ void Check(bool condition, const std::string& what)
 vtkSmartPointer<vtkOpenGLReliefMapper> BricksMapper()
 {
   auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
-  mapper->SetHeightMapData(ReliefTestScene::ReadImage("bricks_height.png"));
+  mapper->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
   mapper->SetDepthScale(0.05);
   return mapper;
 }
@@ -147,7 +147,7 @@ void MeshWithoutTextureCoordinates()
 
 void MeshWithoutNormals()
 {
-  auto square = ReliefTestScene::Square(2.0);
+  auto square = ReliefScene::Square(2.0);
   square->GetPointData()->SetNormals(nullptr);
   Outcome outcome = Render(square, BricksMapper());
   Check(outcome.Errors == 0 && outcome.Warnings == 0, "normals are computed silently");
@@ -157,7 +157,7 @@ void MeshWithoutNormals()
 void NoHeightMap()
 {
   auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
-  Outcome outcome = Render(ReliefTestScene::Square(2.0), mapper);
+  Outcome outcome = Render(ReliefScene::Square(2.0), mapper);
   Check(outcome.Errors == 0 && outcome.Warnings == 1, "one warning without a height map");
   Check(Contains(outcome, "SetHeightMapConnection"), "the warning says how to give one");
   Check(outcome.Pixels.Plain > Covered, "the square renders plainly without a height map");
@@ -170,7 +170,7 @@ void VolumeAsHeightMap()
   volume->AllocateScalars(VTK_FLOAT, 1);
   auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
   mapper->SetHeightMapData(volume);
-  Outcome outcome = Render(ReliefTestScene::Square(2.0), mapper);
+  Outcome outcome = Render(ReliefScene::Square(2.0), mapper);
   Check(outcome.Errors >= 1, "an error for a 3D height map");
   Check(outcome.Pixels.Plain > Covered, "the square renders plainly with a 3D height map");
 }
@@ -180,7 +180,7 @@ void EmptyHeightMap()
   vtkNew<vtkImageData> empty;
   auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
   mapper->SetHeightMapData(empty);
-  Outcome outcome = Render(ReliefTestScene::Square(2.0), mapper);
+  Outcome outcome = Render(ReliefScene::Square(2.0), mapper);
   Check(outcome.Errors >= 1, "an error for an empty height map");
   Check(outcome.Pixels.Plain > Covered, "the square renders plainly with an empty height map");
 }
@@ -201,7 +201,7 @@ void NonFiniteHeights()
   auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
   mapper->SetHeightMapData(heights);
   mapper->SetDepthScale(0.05);
-  Outcome outcome = Render(ReliefTestScene::Square(2.0), mapper);
+  Outcome outcome = Render(ReliefScene::Square(2.0), mapper);
   Check(outcome.Errors == 0 && outcome.Warnings == 1, "one warning for NaN and Inf heights");
   Check(outcome.Pixels.Relief > Covered, "relief is drawn from the clamped heights");
   Check(outcome.Pixels.MaxSamples <= 15, "every search ends within its steps");
@@ -213,7 +213,7 @@ void NonPositiveDepthScale()
   {
     auto mapper = BricksMapper();
     mapper->SetDepthScale(depthScale);
-    Outcome outcome = Render(ReliefTestScene::Square(2.0), mapper);
+    Outcome outcome = Render(ReliefScene::Square(2.0), mapper);
     Check(outcome.Warnings == 1 && Contains(outcome, "DepthScale"), "one warning for DepthScale <= 0");
     Check(outcome.Pixels.ZeroSamples > Covered && outcome.Pixels.Relief == 0,
       "DepthScale <= 0 draws the surface flat, with no search");
@@ -235,7 +235,7 @@ void StepsOutOfRange()
   Check(mapper->GetBinarySteps() == 32, "BinarySteps clamps to 32");
   Check(recorder->Count(vtkCommand::WarningEvent) == 4, "each clamp warns");
   mapper->SetBinarySteps(0);
-  Outcome outcome = Render(ReliefTestScene::Square(2.0), mapper);
+  Outcome outcome = Render(ReliefScene::Square(2.0), mapper);
   Check(outcome.Pixels.Relief > Covered && outcome.Pixels.MaxSamples == 1,
     "one linear step and no bisection take exactly one sample");
 }

@@ -1,7 +1,7 @@
 // SampleCount display mode, the measure of cost: every covered pixel reports the height
 // samples its view ray took, within the bounds of the search method; switching the
 // method rebuilds the shader, while uniform-only setters leave the mapper unmodified.
-#include "ReliefTestScene.h"
+#include "ReliefScene.h"
 
 #include "vtkActor.h"
 #include "vtkOpenGLReliefMapper.h"
@@ -25,7 +25,7 @@ Counts SampleCounts(vtkRenderWindow* window)
 {
   window->Render();
   Counts counts;
-  const std::vector<unsigned char> pixels = ReliefTestScene::Pixels(window);
+  const std::vector<unsigned char> pixels = ReliefScene::Pixels(window);
   double sum = 0.0;
   for (size_t i = 0; i + 2 < pixels.size(); i += 3)
   {
@@ -48,12 +48,12 @@ Counts SampleCounts(vtkRenderWindow* window)
 int TestReliefSampleCount(int, char*[])
 {
   vtkNew<vtkRenderWindow> window;
-  auto renderer = ReliefTestScene::LitRenderer(window, 200, 150);
+  auto renderer = ReliefScene::LitRenderer(window, 200, 150);
   renderer->SetBackground(0.0, 0.0, 1.0);
-  auto mapper = ReliefTestScene::ReliefMapper(ReliefTestScene::Square(2.0), "bricks_height.png", 0.05);
+  auto mapper = ReliefScene::ReliefMapper(ReliefScene::Square(2.0), "bricks_height.png", 0.05);
   mapper->SetDisplayModeToSampleCount();
-  renderer->AddActor(ReliefTestScene::ReliefActor(mapper, "bricks_color.png"));
-  ReliefTestScene::ViewSquare(renderer, 45.0);
+  renderer->AddActor(ReliefScene::ReliefActor(mapper, "bricks_color.png"));
+  ReliefScene::ViewSquare(renderer, 45.0);
   int failures = 0;
   auto check = [&failures](bool condition, const char* what) {
     if (!condition)

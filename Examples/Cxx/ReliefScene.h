@@ -1,7 +1,7 @@
-// Shared set-up of the relief regression tests: one window, one key light, the
-// project's height maps and colour textures.
-#ifndef ReliefTestScene_h
-#define ReliefTestScene_h
+// The scenes of vtkRelief's demo, benchmark and regression tests: one window, one key
+// light, the project's height maps and colour textures. A starting point to copy from.
+#ifndef ReliefScene_h
+#define ReliefScene_h
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -11,15 +11,19 @@
 
 class vtkActor;
 class vtkImageData;
+class vtkMapper;
 class vtkOpenGLReliefMapper;
 class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkTexture;
 
-namespace ReliefTestScene
+namespace ReliefScene
 {
-/// A file of the project's Data/ folder.
+/// Where the project's height maps and textures are (default: the source tree's Data/).
+void SetDataDirectory(const std::string& directory);
+
+/// A file of the data directory.
 std::string DataFile(const std::string& name);
 
 /// A height map of Data/, read with vtkOpenImageIOReader.
@@ -43,8 +47,7 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
 
 /// An actor with `mapper`, the colour texture of Data/ (none when empty) and a
 /// slightly specular material.
-vtkSmartPointer<vtkActor> ReliefActor(
-  vtkOpenGLReliefMapper* mapper, const std::string& colorTexture);
+vtkSmartPointer<vtkActor> ReliefActor(vtkMapper* mapper, const std::string& colorTexture);
 
 /// A renderer lit by one white scene light from the upper left, in a window of the
 /// given size.
@@ -52,6 +55,24 @@ vtkSmartPointer<vtkRenderer> LitRenderer(vtkRenderWindow* window, int width, int
 
 /// Looks at the unit square `angle` degrees away from its normal (0 = head-on).
 void ViewSquare(vtkRenderer* renderer, double angle);
+
+/// The showcase scenes, each filling `window` (of the given size).
+///@{
+/// Bricks on a square with `tiles` x `tiles` repeats, seen `angle` degrees off its normal.
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int width, int height,
+  double angle, double tiles = 2.0, double depthScale = 0.04);
+/// Cobblestones on a coarse torus.
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height);
+/// Rivets under a low light, self-shadowing on (left half) and off (right half).
+void ShowSelfShadowing(vtkRenderWindow* window, int width, int height);
+/// A plain sphere sunk into bricks, depth correction on (left half) and off (right half).
+void ShowInterpenetration(vtkRenderWindow* window, int width, int height);
+/// Plain texture mapping (left half) beside relief mapping (right half) of the same bricks.
+void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height);
+///@}
+
+/// Median wall-clock milliseconds of `frames` renders after `warmup` renders.
+double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup = 3, int frames = 20);
 
 /// The window's pixels, RGB, bottom row first.
 std::vector<unsigned char> Pixels(vtkRenderWindow* window);

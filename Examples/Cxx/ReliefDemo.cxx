@@ -1,0 +1,135 @@
+// ./relief demo: renders vtkRelief's built-in showcase into a folder and prints each
+// image's median milliseconds per frame. Meshes come from VTK sources, height maps and
+// colour textures from the project's Data/ folder: nothing is downloaded.
+#include "ReliefScene.h"
+
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <string>
+
+namespace
+{
+void WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+void WriteWindow(vtkRenderWindow* window, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  WritePNG(capture->GetOutput(), path);
+}
+
+// The SampleCount image (red = samples, green = blue = 0) as a heat map: 0 samples
+// blue, 20 and more red; the background turns black.
+void WriteSampleCountHeatMap(vtkRenderWindow* window, const std::string& path)
+{
+  int* size = window->GetSize();
+  const std::vector<unsigned char> pixels = ReliefScene::Pixels(window);
+  vtkNew<vtkLookupTable> heat;
+  heat->SetHueRange(0.667, 0.0);
+  heat->SetTableRange(0.0, 20.0);
+  heat->Build();
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(size[0], size[1], 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (size_t i = 0; i + 2 < pixels.size(); i += 3)
+  {
+    const bool covered = pixels[i + 1] == 0 && pixels[i + 2] == 0; // the background is blue-grey
+    const unsigned char* color = covered ? heat->MapValue(pixels[i]) : nullptr;
+    for (int c = 0; c < 3; ++c)
+    {
+      out[i + c] = covered ? color[c] : 0;
+    }
+  }
+  WritePNG(image, path);
+}
+
+struct Showcase
+{
+  const char* Name;
+  const char* Shows;
+  std::function<void(vtkRenderWindow*)> Build;
+};
+}
+
+int main(int argc, char* argv[])
+{
+  std::string output = "relief-demo";
+  for (int i = 1; i < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "--data") && i + 1 < argc)
+    {
+      ReliefScene::SetDataDirectory(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--output") && i + 1 < argc)
+    {
+      output = argv[++i];
+    }
+    else
+    {
+      std::cerr << "usage: ReliefDemo [--data DIR] [--output DIR]\n";
+      return 2;
+    }
+  }
+  std::filesystem::create_directories(output);
+
+  const std::vector<Showcase> showcase = {
+    { "bricks_wall", "relief, self-occlusion, per-pixel light, self-shadows",
+      [](vtkRenderWindow* w) { ReliefScene::ShowBricks(w, 640, 480, 45.0); } },
+    { "plain_vs_relief", "the same bricks plainly textured (left) and relief mapped (right)",
+      [](vtkRenderWindow* w) { ReliefScene::ShowPlainBesideRelief(w, 800, 400); } },
+    { "stones_torus", "relief on a curved, coarse mesh",
+      [](vtkRenderWindow* w) { ReliefScene::ShowTorus(w, 640, 480); } },
+    { "self_shadowing", "self-shadowing on (left) and off (right)",
+      [](vtkRenderWindow* w) { ReliefScene::ShowSelfShadowing(w, 800, 400); } },
+    { "interpenetration", "depth correction on (left) and off (right) with a plain sphere",
+      [](vtkRenderWindow* w) { ReliefScene::ShowInterpenetration(w, 800, 400); } },
+    { "sample_count", "height samples per pixel, LinearBinary 10+5 (blue 0, red 20)",
+      [](vtkRenderWindow* w) {
+        ReliefScene::ShowBricks(w, 640, 480, 45.0)->SetDisplayModeToSampleCount();
+      } },
+  };
+
+  std::cout << "vtkRelief demo: images in " << std::filesystem::absolute(output).string() << "\n";
+  for (const Showcase& scene : showcase)
+  {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    scene.Build(window);
+    const double milliseconds = ReliefScene::MedianFrameMilliseconds(window, 2, 10);
+    const std::string path = output + "/" + scene.Name + ".png";
+    if (std::string(scene.Name) == "sample_count")
+    {
+      WriteSampleCountHeatMap(window, path);
+    }
+    else
+    {
+      WriteWindow(window, path);
+    }
+    int* size = window->GetSize();
+    std::printf("  %-21s %4dx%-4d %7.1f ms/frame  %s\n", (std::string(scene.Name) + ".png").c_str(),
+      size[0], size[1], milliseconds, scene.Shows);
+  }
+  return 0;
+}

@@ -1,0 +1,287 @@
+#include "ReliefScene.h"
+
+#include "vtkActor.h"
+#include "vtkLightCollection.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkSphereSource.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkOpenImageIOReader.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSuperquadricSource.h"
+#include "vtkTexture.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace ReliefScene
+{
+namespace
+{
+std::string& DataDirectory()
+{
+  static std::string directory = RELIEF_DATA_DIR;
+  return directory;
+}
+}
+
+void SetDataDirectory(const std::string& directory)
+{
+  DataDirectory() = directory;
+}
+
+std::string DataFile(const std::string& name)
+{
+  return DataDirectory() + "/" + name;
+}
+
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& name)
+{
+  vtkNew<vtkOpenImageIOReader> reader;
+  reader->SetFileName(DataFile(name).c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+vtkSmartPointer<vtkTexture> ReadTexture(const std::string& name)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(ReadImage(name));
+  texture->InterpolateOn();
+  texture->MipmapOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+void TileTextureCoordinates(vtkPolyData* surface, double uTiles, double vTiles)
+{
+  vtkDataArray* tcoords = surface->GetPointData()->GetTCoords();
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    tcoords->SetTuple2(
+      i, tcoords->GetComponent(i, 0) * uTiles, tcoords->GetComponent(i, 1) * vTiles);
+  }
+  tcoords->Modified();
+}
+
+vtkSmartPointer<vtkPolyData> Square(double tiles)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-0.5, -0.5, 0.0);
+  plane->SetPoint1(0.5, -0.5, 0.0);
+  plane->SetPoint2(-0.5, 0.5, 0.0);
+  plane->Update();
+  auto square = vtkSmartPointer<vtkPolyData>::New();
+  square->DeepCopy(plane->GetOutput());
+  TileTextureCoordinates(square, tiles, tiles);
+  return square;
+}
+
+vtkSmartPointer<vtkPolyData> Torus()
+{
+  vtkNew<vtkSuperquadricSource> source;
+  source->ToroidalOn();
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(24);
+  source->SetThickness(0.4);
+  source->SetSize(0.5);
+  source->Update();
+  auto torus = vtkSmartPointer<vtkPolyData>::New();
+  torus->DeepCopy(source->GetOutput());
+  TileTextureCoordinates(torus, 6.0, 2.0);
+  return torus;
+}
+
+vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
+  vtkPolyData* surface, const std::string& heightMap, double depthScale)
+{
+  auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+  mapper->SetInputData(surface);
+  mapper->SetHeightMapData(ReadImage(heightMap));
+  mapper->SetDepthScale(depthScale);
+  return mapper;
+}
+
+vtkSmartPointer<vtkActor> ReliefActor(vtkMapper* mapper, const std::string& colorTexture)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  if (!colorTexture.empty())
+  {
+    actor->SetTexture(ReadTexture(colorTexture));
+  }
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(0.85);
+  actor->GetProperty()->SetSpecular(0.2);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  return actor;
+}
+
+vtkSmartPointer<vtkRenderer> LitRenderer(vtkRenderWindow* window, int width, int height)
+{
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(0.1, 0.12, 0.16);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(-1.0, 1.0, 1.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->PositionalOff();
+  renderer->AddLight(light);
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  return renderer;
+}
+
+void ViewSquare(vtkRenderer* renderer, double angle)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->Elevation(-angle);
+  camera->OrthogonalizeViewUp();
+  camera->SetViewAngle(45.0);
+  renderer->ResetCamera();
+  camera->Dolly(1.3);
+  renderer->ResetCameraClippingRange();
+}
+}
+
+namespace ReliefScene
+{
+std::vector<unsigned char> Pixels(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  vtkDataArray* scalars = capture->GetOutput()->GetPointData()->GetScalars();
+  const auto* first = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
+  return std::vector<unsigned char>(first, first + scalars->GetDataSize());
+}
+}
+
+namespace ReliefScene
+{
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int width, int height,
+  double angle, double tiles, double depthScale)
+{
+  auto renderer = LitRenderer(window, width, height);
+  auto mapper = ReliefMapper(Square(tiles), "bricks_height.png", depthScale);
+  renderer->AddActor(ReliefActor(mapper, "bricks_color.png"));
+  ViewSquare(renderer, angle);
+  return mapper;
+}
+
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height)
+{
+  auto renderer = LitRenderer(window, width, height);
+  auto mapper = ReliefMapper(Torus(), "stones_height.png", 0.03);
+  renderer->AddActor(ReliefActor(mapper, "stones_color.png"));
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, -1.0, 0.8);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  camera->Dolly(1.4);
+  renderer->ResetCameraClippingRange();
+  return mapper;
+}
+
+void ShowSelfShadowing(vtkRenderWindow* window, int width, int height)
+{
+  for (bool shadows : { true, false })
+  {
+    auto renderer = LitRenderer(window, width, height);
+    renderer->SetViewport(shadows ? 0.0 : 0.5, 0.0, shadows ? 0.5 : 1.0, 1.0);
+    vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+    light->SetPosition(-1.0, 0.4, 0.35); // low, so shadows are long
+    auto mapper = ReliefMapper(Square(1.0), "rivets_height.png", 0.08);
+    mapper->SetSelfShadowing(shadows);
+    mapper->SetLinearSteps(32);
+    renderer->AddActor(ReliefActor(mapper, ""));
+    ViewSquare(renderer, 20.0);
+  }
+}
+
+void ShowInterpenetration(vtkRenderWindow* window, int width, int height)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0.0, 0.0, -0.12);
+  sphere->SetRadius(0.15);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(48);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  for (bool correction : { true, false })
+  {
+    auto renderer = LitRenderer(window, width, height);
+    renderer->SetViewport(correction ? 0.0 : 0.5, 0.0, correction ? 0.5 : 1.0, 1.0);
+    auto mapper = ReliefMapper(Square(1.0), "bricks_height.png", 0.15);
+    mapper->SetDepthCorrection(correction);
+    mapper->SetLinearSteps(24);
+    renderer->AddActor(ReliefActor(mapper, "bricks_color.png"));
+    vtkNew<vtkActor> ball;
+    ball->SetMapper(sphereMapper);
+    ball->GetProperty()->SetColor(0.3, 0.6, 0.95);
+    renderer->AddActor(ball);
+    ViewSquare(renderer, 50.0);
+  }
+}
+
+void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height)
+{
+  auto square = Square(2.0);
+  for (bool relief : { false, true })
+  {
+    auto renderer = LitRenderer(window, width, height);
+    renderer->SetViewport(relief ? 0.5 : 0.0, 0.0, relief ? 1.0 : 0.5, 1.0);
+    vtkSmartPointer<vtkMapper> mapper;
+    if (relief)
+    {
+      mapper = ReliefMapper(square, "bricks_height.png", 0.04);
+    }
+    else
+    {
+      auto plain = vtkSmartPointer<vtkPolyDataMapper>::New();
+      plain->SetInputData(square);
+      mapper = plain;
+    }
+    renderer->AddActor(ReliefActor(mapper, "bricks_color.png"));
+    ViewSquare(renderer, 50.0);
+  }
+}
+
+double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)
+{
+  for (int i = 0; i < warmup; ++i)
+  {
+    window->Render();
+  }
+  window->WaitForCompletion();
+  std::vector<double> milliseconds;
+  for (int i = 0; i < frames; ++i)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    const std::chrono::duration<double, std::milli> elapsed =
+      std::chrono::steady_clock::now() - start;
+    milliseconds.push_back(elapsed.count());
+  }
+  std::nth_element(milliseconds.begin(), milliseconds.begin() + frames / 2, milliseconds.end());
+  return milliseconds[frames / 2];
+}
+}
