@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
@@ -45,6 +46,27 @@ constexpr const char* NormalAttribute = "reliefNormalMC";
 constexpr const char* TangentAttribute = "reliefTangentMC";
 constexpr const char* TCoordAttribute = "reliefTCoordMC";
 constexpr const char* TextureScaleAttribute = "reliefTextureScaleMC";
+
+// A repeating, trilinearly filtered 2D texture of `values` (one or four components).
+bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
+  const int dimensions[3], vtkDataArray* values)
+{
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::Repeat);
+  texture->SetWrapT(vtkTextureObject::Repeat);
+  texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], values->GetNumberOfComponents(),
+        values->GetDataType(), values->GetVoidPointer(0)))
+  {
+    return false;
+  }
+  // vtkTextureObject makes mipmaps for cube maps only
+  texture->Activate();
+  glGenerateMipmap(GL_TEXTURE_2D);
+  texture->Deactivate();
+  return true;
+}
 
 // Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
 void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
@@ -242,34 +264,31 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return false; // the filter has said why
   }
 
-  if (!this->ReliefTexture)
-  {
-    this->ReliefTexture = vtkSmartPointer<vtkTextureObject>::New();
-  }
   if (this->ReliefTexture->GetHandle() != 0 &&
     this->ReliefTextureUploadTime > relief->GetMTime())
   {
     return true;
   }
 
+  // The searches read depth only: a one-channel copy costs them a quarter of the
+  // texel traffic of the four-channel relief texture, read once per pixel for shading.
+  const vtkIdType texelCount = relief->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> depths;
+  depths->SetNumberOfValues(texelCount);
+  for (vtkIdType texel = 0; texel < texelCount; ++texel)
+  {
+    depths->SetValue(texel, static_cast<float>(texels->GetComponent(texel, 3)));
+  }
   int dimensions[3];
   relief->GetDimensions(dimensions);
-  this->ReliefTexture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
-  this->ReliefTexture->SetWrapS(vtkTextureObject::Repeat);
-  this->ReliefTexture->SetWrapT(vtkTextureObject::Repeat);
-  this->ReliefTexture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
-  this->ReliefTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!this->ReliefTexture->Create2DFromRaw(dimensions[0], dimensions[1],
-        texels->GetNumberOfComponents(), texels->GetDataType(), texels->GetVoidPointer(0)))
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!UploadMipmappedTexture(this->ReliefTexture, window, dimensions, texels) ||
+    !UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths))
   {
     vtkErrorMacro("Could not upload the " << dimensions[0] << "x" << dimensions[1]
                                           << " relief texture to the GPU.");
     return false;
   }
-  // vtkTextureObject makes mipmaps for cube maps only
-  this->ReliefTexture->Activate();
-  glGenerateMipmap(GL_TEXTURE_2D);
-  this->ReliefTexture->Deactivate();
   this->ReliefTextureUploadTime.Modified();
   return true;
 }
@@ -327,6 +346,7 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   if (this->DrawingRelief)
   {
     this->ReliefTexture->Activate();
+    this->DepthTexture->Activate();
   }
 }
 
@@ -334,6 +354,7 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
 {
   if (this->DrawingRelief)
   {
+    this->DepthTexture->Deactivate();
     this->ReliefTexture->Deactivate();
   }
   this->Superclass::RenderPieceFinish(ren, actor);
@@ -457,6 +478,7 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
     return;
   }
   program->SetUniformi("reliefTexture", this->ReliefTexture->GetTextureUnit());
+  program->SetUniformi("reliefDepthTexture", this->DepthTexture->GetTextureUnit());
   const float textureSize[2] = { static_cast<float>(this->ReliefTexture->GetWidth()),
     static_cast<float>(this->ReliefTexture->GetHeight()) };
   program->SetUniform2f("reliefTextureSize", textureSize);
@@ -514,10 +536,8 @@ void vtkOpenGLReliefMapper::SetCameraShaderParameters(
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->ReliefTexture)
-  {
-    this->ReliefTexture->ReleaseGraphicsResources(window);
-  }
+  this->ReliefTexture->ReleaseGraphicsResources(window);
+  this->DepthTexture->ReleaseGraphicsResources(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
 

@@ -26,7 +26,6 @@
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkReliefRenderingModule.h"
-#include "vtkSmartPointer.h"
 
 class vtkImageData;
 class vtkMatrix3x3;
@@ -162,7 +161,8 @@ protected:
 
   vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
-  vtkSmartPointer<vtkTextureObject> ReliefTexture;
+  vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth), read at the hit
+  vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
   vtkTimeStamp ReliefTextureUploadTime;
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
   bool DrawingRelief = false;

@@ -1,6 +1,7 @@
 // vtkRelief fragment declarations: uniforms, the interpolated frame, the search, and
 // the per-light shadow query used by VTK's lighting code.
-uniform sampler2D reliefTexture;   // (nx, ny, nz, depth) from vtkReliefTextureFilter
+uniform sampler2D reliefTexture;      // (nx, ny, nz, depth) from vtkReliefTextureFilter
+uniform sampler2D reliefDepthTexture; // its depth alone, for the searches
 uniform vec2 reliefTextureSize;    // texels per tile
 uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio
 uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief
@@ -20,7 +21,7 @@ in vec2 reliefTextureScaleVC;
 // height read inside them can pick its mipmap level.
 vec2 reliefGradX;
 vec2 reliefGradY;
-#define RELIEF_DEPTH(uv) textureGrad(reliefTexture, uv, reliefGradX, reliefGradY).a
+#define RELIEF_DEPTH(uv) textureGrad(reliefDepthTexture, uv, reliefGradX, reliefGradY).r
 
 //VTK::Relief::Common
 //VTK::Relief::Search
