@@ -1,0 +1,208 @@
+"""Tests of vtkRelief's wrapped API: classes, properties, the reader and the relief
+texture, and a sample-count render read back into numpy.
+
+Run by ctest as: TestReliefPython.py -D <Data dir> -V <baseline png> -T <temp dir>,
+with VTK's /usr/bin/python3 and PYTHONPATH set to the built vtkrelief package.
+"""
+import argparse
+import os
+import sys
+import unittest
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.vtkConstants import VTK_FLOAT, VTK_STRING, VTK_UNSIGNED_SHORT
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkFiltersSources import vtkPlaneSource
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
+                                         vtkWindowToImageFilter)
+
+import vtkrelief
+from vtkrelief import (vtkOpenGLReliefMapper, vtkOpenImageIOReader,
+                       vtkReliefTangentFrameFilter, vtkReliefTextureFilter)
+
+parser = argparse.ArgumentParser()
+parser.add_argument("-D", dest="data", required=True)
+parser.add_argument("-T", dest="temporary", required=True)
+ARGUMENTS, _ = parser.parse_known_args()
+
+
+class MessageRecorder:
+    """Collects the texts of the warnings or errors an object reports."""
+
+    def __init__(self, vtk_object, event):
+        self.messages = []
+        vtk_object.AddObserver(event, self.record)
+
+    @calldata_type(VTK_STRING)
+    def record(self, caller, event, message):
+        self.messages.append(message)
+
+
+def read_image(name):
+    reader = vtkOpenImageIOReader()
+    reader.SetFileName(os.path.join(ARGUMENTS.data, name))
+    reader.Update()
+    return reader.GetOutput()
+
+
+class TestReliefPython(unittest.TestCase):
+    def test_classes_come_from_the_package(self):
+        for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
+                    vtkReliefTangentFrameFilter):
+            self.assertIs(getattr(vtkrelief, cls.__name__), cls)
+            self.assertEqual(cls().GetClassName(), cls.__name__)
+
+    def test_search_method_round_trips(self):
+        mapper = vtkOpenGLReliefMapper()
+        self.assertEqual(mapper.GetSearchMethodAsString(), "LinearBinary")
+        mapper.SetSearchMethodToLinear()
+        self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.LINEAR)
+        self.assertEqual(mapper.GetSearchMethodAsString(), "Linear")
+        mapper.SetSearchMethodToLinearBinary()
+        self.assertEqual(mapper.GetSearchMethodAsString(), "LinearBinary")
+
+        errors = MessageRecorder(mapper, vtkCommand.ErrorEvent)
+        mapper.SetSearchMethod(42)
+        self.assertEqual(len(errors.messages), 1)
+        self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.LINEAR_BINARY)
+
+    def test_step_counts_are_clamped_with_a_warning(self):
+        mapper = vtkOpenGLReliefMapper()
+        warnings = MessageRecorder(mapper, vtkCommand.WarningEvent)
+        mapper.SetLinearSteps(64)
+        self.assertEqual(mapper.GetLinearSteps(), 64)
+        self.assertEqual(warnings.messages, [])
+        for asked, kept in ((0, 1), (-5, 1), (513, 512), (100000, 512)):
+            mapper.SetLinearSteps(asked)
+            self.assertEqual(mapper.GetLinearSteps(), kept)
+        self.assertEqual(len(warnings.messages), 4)
+        self.assertIn("LinearSteps", warnings.messages[0])
+
+        mapper.SetBinarySteps(33)
+        self.assertEqual(mapper.GetBinarySteps(), 32)
+        self.assertEqual(len(warnings.messages), 5)
+
+    def test_uniform_properties_round_trip(self):
+        mapper = vtkOpenGLReliefMapper()
+        mapper.SetDepthScale(0.125)
+        self.assertEqual(mapper.GetDepthScale(), 0.125)
+
+        self.assertTrue(mapper.GetSelfShadowing())
+        mapper.SelfShadowingOff()
+        self.assertFalse(mapper.GetSelfShadowing())
+        mapper.SetSelfShadowing(True)
+        self.assertTrue(mapper.GetSelfShadowing())
+
+        self.assertEqual(mapper.GetDisplayMode(), vtkOpenGLReliefMapper.SHADED)
+        mapper.SetDisplayModeToSampleCount()
+        self.assertEqual(mapper.GetDisplayMode(), vtkOpenGLReliefMapper.SAMPLE_COUNT)
+        errors = MessageRecorder(mapper, vtkCommand.ErrorEvent)
+        mapper.SetDisplayMode(7)
+        self.assertEqual(len(errors.messages), 1)
+        self.assertEqual(mapper.GetDisplayMode(), vtkOpenGLReliefMapper.SAMPLE_COUNT)
+
+    def test_reader_keeps_sixteen_bits(self):
+        image = read_image("bricks_height.png")
+        self.assertEqual(image.GetDimensions(), (512, 512, 1))
+        self.assertEqual(image.GetScalarType(), VTK_UNSIGNED_SHORT)
+        self.assertEqual(image.GetNumberOfScalarComponents(), 1)
+        self.assertGreater(image.GetScalarRange()[1], 255)  # more than 8 bits of levels
+
+    def test_relief_texture_holds_normals_and_depth(self):
+        relief = vtkReliefTextureFilter()
+        relief.SetInputData(read_image("bricks_height.png"))
+        relief.Update()
+        texture = relief.GetOutput()
+        self.assertEqual(texture.GetDimensions(), (512, 512, 1))
+        self.assertEqual(texture.GetScalarType(), VTK_FLOAT)
+        texels = vtk_to_numpy(texture.GetPointData().GetScalars())
+        self.assertEqual(texels.shape, (512 * 512, 4))
+        depth = texels[:, 3]
+        self.assertGreaterEqual(depth.min(), 0.0)
+        self.assertLessEqual(depth.max(), 1.0)
+        # white = high: brick faces (h about 0.8) are shallow, mortar (h < 0.05) deep
+        self.assertLess(depth.min(), 0.25)
+        self.assertGreater(depth.max(), 0.9)
+
+
+class TestSampleCountRender(unittest.TestCase):
+    """The sample-count display mode, read back: red = height samples per pixel."""
+
+    @classmethod
+    def setUpClass(cls):
+        plane = vtkPlaneSource()  # unit square, texture coordinates [0, 1]^2
+        cls.mapper = vtkOpenGLReliefMapper()
+        cls.mapper.SetInputConnection(plane.GetOutputPort())
+        cls.mapper.SetHeightMapData(read_image("bricks_height.png"))
+        cls.mapper.SetDepthScale(0.05)
+        cls.mapper.SetDisplayModeToSampleCount()
+        actor = vtkActor()
+        actor.SetMapper(cls.mapper)
+        renderer = vtkRenderer()
+        renderer.AddActor(actor)
+        # pure blue behind: red and green 0, and blue tells background from relief
+        renderer.SetBackground(0.0, 0.0, 1.0)
+        renderer.GetActiveCamera().Elevation(-45)  # oblique, so that rays cross texels
+        renderer.ResetCamera()
+        cls.window = vtkRenderWindow()
+        cls.window.SetOffScreenRendering(1)
+        cls.window.SetMultiSamples(0)  # no blending of counts at the edges
+        cls.window.SetSize(200, 150)
+        cls.window.AddRenderer(renderer)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.window.Finalize()
+
+    def render(self, name):
+        """Pixels of a fresh render as a (height, width, 3) array; also saved to -T."""
+        self.window.Render()
+        grab = vtkWindowToImageFilter()
+        grab.SetInput(self.window)
+        grab.Update()
+        writer = vtkPNGWriter()
+        writer.SetFileName(os.path.join(ARGUMENTS.temporary, name + ".png"))
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+        width, height, _ = grab.GetOutput().GetDimensions()
+        pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+        return pixels.reshape(height, width, -1)[:, :, :3].astype(int)
+
+    def split(self, pixels):
+        covered = pixels[:, :, 2] == 0
+        fraction = covered.mean()
+        self.assertGreater(fraction, 0.1, "the relief covers almost nothing")
+        self.assertLess(fraction, 0.9, "the relief covers almost everything")
+        background = pixels[~covered]
+        self.assertTrue((background[:, 0] == 0).all(), "background red must be 0")
+        self.assertTrue((background[:, 2] == 255).all())
+        relief = pixels[covered]
+        self.assertTrue((relief[:, 1] == 0).all(), "sample-count green must be 0")
+        return relief[:, 0]
+
+    def test_linear_binary_and_linear_counts(self):
+        self.mapper.SetSearchMethodToLinearBinary()
+        self.mapper.SetLinearSteps(10)
+        self.mapper.SetBinarySteps(5)
+        samples = self.split(self.render("TestReliefPython_LinearBinary"))
+        self.assertGreaterEqual(samples.min(), 1)
+        self.assertLessEqual(samples.max(), 15)
+        # rays into the mortar (depth > 0.9) take all 10 linear steps, then 5 binary ones
+        self.assertEqual(samples.max(), 15)
+        linear_binary_mean = samples.mean()
+
+        self.mapper.SetSearchMethodToLinear()
+        samples = self.split(self.render("TestReliefPython_Linear"))
+        self.assertGreaterEqual(samples.min(), 1)
+        self.assertEqual(samples.max(), 10)
+        self.assertLess(samples.mean(), linear_binary_mean)
+
+        self.mapper.SetLinearSteps(4)  # a uniform: takes effect without a rebuild
+        samples = self.split(self.render("TestReliefPython_Linear4"))
+        self.assertEqual(samples.max(), 4)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0]], verbosity=2)
