@@ -432,10 +432,10 @@ void vtkOpenGLReliefMapper::ReplaceReliefTextureReads(vtkShader* fragmentShader)
 {
   // VTK reads the actor's textures with implicit derivatives, which jump wherever the
   // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
-  // them with the derivatives of the entry coordinates, as the relief itself is read.
+  // them at the level of the entry coordinates, as the relief itself is read.
   const std::regex implicitRead(R"(texture\((\w+), tcoordVCVSOutput\))");
-  fragmentShader->SetSource(std::regex_replace(fragmentShader->GetSource(), implicitRead,
-    "textureGrad($1, tcoordVCVSOutput, reliefGradX, reliefGradY)"));
+  fragmentShader->SetSource(std::regex_replace(
+    fragmentShader->GetSource(), implicitRead, "reliefTextureAtRay($1, tcoordVCVSOutput)"));
 }
 
 void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity)

@@ -1,6 +1,7 @@
 // SampleCount display mode, the measure of cost: every covered pixel reports the height
 // samples its view ray took, within the bounds of the search method; switching the
-// method rebuilds the shader, while uniform-only setters leave the mapper unmodified.
+// method rebuilds the shader, uniform-only setters leave the mapper unmodified, and
+// released graphics resources come back.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -91,5 +92,10 @@ int TestReliefSampleCount(int, char*[])
   mapper->SetDepthScale(0.05);
   Counts again = SampleCounts(window);
   check(again.Mean == linearBinary.Mean, "switching back gives the same cost");
+
+  // released graphics resources (a context change) are rebuilt on the next render
+  renderer->ReleaseGraphicsResources(window);
+  Counts rebuilt = SampleCounts(window);
+  check(rebuilt.Mean == linearBinary.Mean, "textures and shaders come back after release");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

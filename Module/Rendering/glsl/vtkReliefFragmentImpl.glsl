@@ -1,6 +1,7 @@
   // frame: the fragment's view ray in relief texture space (seed 000 s3.4)
   reliefGradX = dFdx(reliefTCoord);
   reliefGradY = dFdy(reliefTCoord);
+  reliefLod = reliefLevel(reliefTextureSize);
   reliefFrameN = normalize(reliefNormalVC);
   if (gl_FrontFacing == false) { reliefFrameN = -reliefFrameN; }
   reliefFrameT = normalize(reliefTangentVC - reliefFrameN * dot(reliefFrameN, reliefTangentVC));
@@ -32,7 +33,7 @@
   float reliefDescent = max(-dot(reliefViewVC, reliefFrameN), 1e-6);
   vec3 reliefHitVC = reliefPositionVC +
     reliefViewVC * (reliefViewHit.position.z * max(reliefDepthScale, 0.0) / reliefDescent);
-  vec4 reliefTexel = textureGrad(reliefTexture, reliefHitTCoord, reliefGradX, reliefGradY);
+  vec4 reliefTexel = textureLod(reliefTexture, reliefHitTCoord, reliefLod);
   vec2 reliefSlope = reliefTexel.xy / (max(reliefTexel.z, 1e-4) * reliefNormalRatio) *
     reliefTextureSize * max(reliefDepthScale, 0.0) / reliefScale;
   vec3 reliefNormalTS = normalize(vec3(reliefSlope, 1.0));
