@@ -1,0 +1,151 @@
+// vtkReliefTangentFrameFilter: the per-point frame and texture scale of the relief
+// mappers, on meshes whose answers are known.
+#include "ReliefEventRecorder.h"
+#include "vtkReliefTangentFrameFilter.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+namespace
+{
+// A width x height rectangle in the xy plane, one quad, texture coordinates [0, 1]^2
+// (u mirrored when asked).
+vtkSmartPointer<vtkPolyData> Rectangle(double width, double height, bool mirrorU = false)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetPoint1(width, 0.0, 0.0);
+  plane->SetPoint2(0.0, height, 0.0);
+  plane->Update();
+  auto rectangle = vtkSmartPointer<vtkPolyData>::New();
+  rectangle->DeepCopy(plane->GetOutput());
+  if (mirrorU)
+  {
+    vtkDataArray* tcoords = rectangle->GetPointData()->GetTCoords();
+    for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+    {
+      tcoords->SetComponent(i, 0, 1.0 - tcoords->GetComponent(i, 0));
+    }
+  }
+  return rectangle;
+}
+
+vtkPolyData* Frame(vtkReliefTangentFrameFilter* filter, vtkPolyData* input)
+{
+  filter->SetInputData(input);
+  filter->Update();
+  return filter->GetOutput();
+}
+
+vtkDataArray* Scale(vtkPolyData* frame)
+{
+  return frame->GetPointData()->GetArray(vtkReliefTangentFrameFilter::TextureScaleArrayName());
+}
+}
+
+TEST(ReliefTangentFrameFilter, TextureScaleIsTheModelLengthOfOneTextureUnit)
+{
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, Rectangle(2.0, 0.5));
+  ASSERT_TRUE(filter->GetHasTangentFrame());
+  EXPECT_EQ(frame->GetNumberOfPolys(), 2); // the quad became two triangles
+  ASSERT_NE(Scale(frame), nullptr);
+  ASSERT_NE(frame->GetPointData()->GetTangents(), nullptr);
+  for (vtkIdType i = 0; i < frame->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_NEAR(Scale(frame)->GetComponent(i, 0), 2.0, 1e-6);
+    EXPECT_NEAR(Scale(frame)->GetComponent(i, 1), 0.5, 1e-6);
+    double tangent[3];
+    frame->GetPointData()->GetTangents()->GetTuple(i, tangent);
+    EXPECT_NEAR(tangent[0], 1.0, 1e-6); // along increasing u
+  }
+}
+
+TEST(ReliefTangentFrameFilter, MirroredTextureGivesNegativeBitangentScale)
+{
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, Rectangle(1.0, 1.0, true));
+  for (vtkIdType i = 0; i < frame->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_NEAR(Scale(frame)->GetComponent(i, 0), 1.0, 1e-6);
+    EXPECT_NEAR(Scale(frame)->GetComponent(i, 1), -1.0, 1e-6);
+  }
+}
+
+TEST(ReliefTangentFrameFilter, MissingNormalsAreComputedAndGivenArraysKept)
+{
+  auto rectangle = Rectangle(1.0, 1.0);
+  rectangle->GetPointData()->SetNormals(nullptr);
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("MyTangents");
+  tangents->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < rectangle->GetNumberOfPoints(); ++i)
+  {
+    tangents->InsertNextTuple3(1.0, 0.0, 0.0);
+  }
+  rectangle->GetPointData()->SetTangents(tangents);
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, rectangle);
+  ASSERT_NE(frame->GetPointData()->GetNormals(), nullptr);
+  EXPECT_NEAR(std::abs(frame->GetPointData()->GetNormals()->GetComponent(0, 2)), 1.0, 1e-6);
+  EXPECT_STREQ(frame->GetPointData()->GetTangents()->GetName(), "MyTangents");
+  EXPECT_EQ(rectangle->GetPointData()->GetNormals(), nullptr); // the input is untouched
+}
+
+TEST(ReliefTangentFrameFilter, CurvedMeshScaleFollowsTheSurface)
+{
+  // a sphere of radius 1 with u around the equator: one texture unit spans 2 pi there
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(32);
+  sphere->Update();
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetNumberOfComponents(2);
+  vtkPolyData* surface = sphere->GetOutput();
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    surface->GetPoint(i, p);
+    tcoords->InsertNextTuple2(std::atan2(p[1], p[0]) / (2.0 * vtkMath::Pi()), p[2]);
+  }
+  surface->GetPointData()->SetTCoords(tcoords);
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, surface);
+  int checked = 0;
+  for (vtkIdType i = 0; i < frame->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    frame->GetPoint(i, p);
+    const double ringRadius = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+    if (std::abs(p[2]) < 0.3 && std::abs(std::atan2(p[1], p[0])) < 2.5) // off the u seam
+    {
+      EXPECT_NEAR(Scale(frame)->GetComponent(i, 0), 2.0 * vtkMath::Pi() * ringRadius, 0.05);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST(ReliefTangentFrameFilter, MeshWithoutTextureCoordinatesIsAnErrorAndPassesThrough)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
+  vtkPolyData* frame = Frame(filter, sphere->GetOutput());
+  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
+  EXPECT_TRUE(recorder->AnyMessageContains("vtkTextureMapToCylinder"));
+  EXPECT_FALSE(filter->GetHasTangentFrame());
+  EXPECT_EQ(frame->GetNumberOfPoints(), sphere->GetOutput()->GetNumberOfPoints());
+  EXPECT_EQ(Scale(frame), nullptr);
+}
