@@ -255,8 +255,16 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   }
   this->WarnedMissingHeightMap = false;
 
+  // A failed (empty) output would make the pipeline run the filter, and repeat its
+  // error, every frame: run it only when the heights or its settings change.
   this->ReliefTextureFilter->SetInputData(heights);
-  this->ReliefTextureFilter->Update();
+  const vtkMTimeType inputTime =
+    std::max(heights->GetMTime(), this->ReliefTextureFilter->GetMTime());
+  if (inputTime != this->ReliefTextureInputTime)
+  {
+    this->ReliefTextureInputTime = inputTime;
+    this->ReliefTextureFilter->Update();
+  }
   vtkImageData* relief = this->ReliefTextureFilter->GetOutput();
   vtkDataArray* texels = relief->GetPointData()->GetScalars();
   if (!texels || relief->GetNumberOfPoints() == 0)

@@ -164,6 +164,7 @@ protected:
   vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth), read at the hit
   vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
   vtkTimeStamp ReliefTextureUploadTime;
+  vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
   bool DrawingRelief = false;
   vtkMTimeType CheckedSurfaceTime = 0;
