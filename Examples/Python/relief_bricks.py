@@ -1,7 +1,7 @@
 """A brick torus: vtkRelief's Python usage, rendered offscreen into a PNG.
 
 Run with VTK's Python and the built package on the path, under an X display:
-    PYTHONPATH=build/python /usr/bin/python3 Examples/Python/relief_bricks.py out.png
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/relief_bricks.py out.png
 """
 import os
 import sys
