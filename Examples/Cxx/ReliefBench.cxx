@@ -138,6 +138,8 @@ int main(int argc, char* argv[])
 
   std::vector<Configuration> configurations = {
     { "plain texturing", -1, 0, 0, false },
+    { "Linear 1, no self-shadowing (frame and shading)", vtkOpenGLReliefMapper::LINEAR, 1, 0,
+      false },
     { "Linear 10", vtkOpenGLReliefMapper::LINEAR, 10, 0, true },
     { "LinearBinary 10+5", vtkOpenGLReliefMapper::LINEAR_BINARY, 10, 5, true },
     { "LinearBinary 10+5, no self-shadowing", vtkOpenGLReliefMapper::LINEAR_BINARY, 10, 5, false },
