@@ -17,15 +17,18 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <vector>
 
 vtkStandardNewMacro(vtkReliefTangentFrameFilter);
 
 namespace
 {
-bool IsTriangleMesh(vtkPolyData* mesh)
+// True when the mesh holds triangles and nothing else (no vertices, lines or strips).
+bool IsTrianglesOnly(vtkPolyData* mesh)
 {
-  if (mesh->GetNumberOfStrips() > 0)
+  if (mesh->GetNumberOfStrips() > 0 || mesh->GetNumberOfVerts() > 0 ||
+    mesh->GetNumberOfLines() > 0)
   {
     return false;
   }
@@ -63,11 +66,47 @@ glm::dvec3 PointOf(vtkPolyData* mesh, vtkIdType id)
   return glm::dvec3(p[0], p[1], p[2]);
 }
 
+// The first three components (a tangent array may carry handedness in a fourth).
 glm::dvec3 TupleOf3(vtkDataArray* array, vtkIdType id)
 {
-  double v[3];
-  array->GetTuple(id, v);
-  return glm::dvec3(v[0], v[1], v[2]);
+  return glm::dvec3(
+    array->GetComponent(id, 0), array->GetComponent(id, 1), array->GetComponent(id, 2));
+}
+
+// The unit normal of a point; +z where the normal has no direction (a point on
+// degenerate triangles only), so every frame stays finite.
+glm::dvec3 UnitNormal(vtkDataArray* normals, vtkIdType id)
+{
+  const glm::dvec3 normal = TupleOf3(normals, id);
+  const double length = glm::length(normal);
+  return std::isfinite(length) && length > 0.0 ? normal / length : glm::dvec3(0.0, 0.0, 1.0);
+}
+
+// Unit tangents perpendicular to the unit normals. A tangent that is missing its
+// direction (not finite, or along the normal: a triangle with no texture area gives
+// one) becomes any direction in the tangent plane, so no NaN reaches the shader.
+vtkSmartPointer<vtkFloatArray> OrthonormalTangents(vtkDataArray* normals, vtkDataArray* tangents)
+{
+  auto result = vtkSmartPointer<vtkFloatArray>::New();
+  result->SetName(tangents->GetName() ? tangents->GetName() : "Tangents");
+  result->SetNumberOfComponents(3);
+  result->SetNumberOfTuples(tangents->GetNumberOfTuples());
+  for (vtkIdType id = 0; id < tangents->GetNumberOfTuples(); ++id)
+  {
+    const glm::dvec3 normal = UnitNormal(normals, id);
+    glm::dvec3 tangent = TupleOf3(tangents, id);
+    tangent -= normal * glm::dot(normal, tangent);
+    const double length = glm::length(tangent);
+    if (!std::isfinite(length) || length < 1e-12)
+    {
+      const glm::dvec3 axis =
+        std::abs(normal.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+      tangent = glm::cross(normal, axis);
+    }
+    tangent = glm::normalize(tangent);
+    result->SetTuple3(id, tangent.x, tangent.y, tangent.z);
+  }
+  return result;
 }
 
 glm::dvec2 TupleOf2(vtkDataArray* array, vtkIdType id)
@@ -105,9 +144,8 @@ vtkSmartPointer<vtkFloatArray> ComputeTextureScale(vtkPolyData* mesh)
     const glm::dvec3 dPdv = (edge2 * uv1.x - edge1 * uv2.x) / uvArea;
     for (int corner = 0; corner < 3; ++corner)
     {
-      const glm::dvec3 normal = TupleOf3(normals, ids[corner]);
-      glm::dvec3 tangent = TupleOf3(tangents, ids[corner]);
-      tangent = glm::normalize(tangent - normal * glm::dot(normal, tangent));
+      const glm::dvec3 normal = UnitNormal(normals, ids[corner]);
+      const glm::dvec3 tangent = TupleOf3(tangents, ids[corner]);
       const glm::dvec3 bitangent = glm::cross(normal, tangent);
       sums[ids[corner]] +=
         glm::dvec3(area * glm::dot(dPdu, tangent), area * glm::dot(dPdv, bitangent), area);
@@ -155,13 +193,23 @@ int vtkReliefTangentFrameFilter::RequestData(
     return 1;
   }
 
+  // relief lives on polygons: vertices and lines are left out of the relief surface
   vtkSmartPointer<vtkPolyData> mesh = input;
-  if (!IsTriangleMesh(mesh))
+  if (!IsTrianglesOnly(mesh))
   {
     vtkNew<vtkTriangleFilter> triangulate;
     triangulate->SetInputData(mesh);
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
     triangulate->Update();
     mesh = triangulate->GetOutput();
+  }
+  if (mesh->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("The mesh has no polygons: relief is drawn on polygons only. Give a "
+                  "surface (vtkGeometryFilter extracts one from other datasets).");
+    output->ShallowCopy(input);
+    return 1;
   }
   this->UpdateProgress(0.25);
 
@@ -192,7 +240,7 @@ int vtkReliefTangentFrameFilter::RequestData(
   // the mapper binds arrays to shader inputs by name
   vtkPointData* pointData = output->GetPointData();
   pointData->SetNormals(Named(pointData->GetNormals(), "Normals"));
-  pointData->SetTangents(Named(pointData->GetTangents(), "Tangents"));
+  pointData->SetTangents(OrthonormalTangents(pointData->GetNormals(), pointData->GetTangents()));
   pointData->SetTCoords(Named(pointData->GetTCoords(), "TCoords"));
   pointData->AddArray(ComputeTextureScale(output));
   this->HasTangentFrame = true;

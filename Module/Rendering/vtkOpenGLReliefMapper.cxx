@@ -2,6 +2,9 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkOutputWindow.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -26,6 +29,8 @@
 #include "vtkReliefCommon.h"
 #include "vtkReliefFragmentDec.h"
 #include "vtkReliefFragmentImpl.h"
+#include "vtkReliefGeometryDec.h"
+#include "vtkReliefGeometryImpl.h"
 #include "vtkReliefSearch.h"
 #include "vtkReliefVertexDec.h"
 #include "vtkReliefVertexImpl.h"
@@ -84,6 +89,31 @@ void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
 {
   this->SetNumberOfInputPorts(2);
+  // The internal filters' errors and warnings are the mapper's: observers of the mapper
+  // receive them, and without observers they are printed as usual.
+  this->ForwardMessages->SetClientData(this);
+  this->ForwardMessages->SetCallback(
+    [](vtkObject*, unsigned long event, void* mapper, void* message) {
+      auto* self = static_cast<vtkOpenGLReliefMapper*>(mapper);
+      if (self->HasObserver(event))
+      {
+        self->InvokeEvent(event, message);
+      }
+      else if (event == vtkCommand::ErrorEvent)
+      {
+        vtkOutputWindowDisplayErrorText(static_cast<const char*>(message));
+      }
+      else
+      {
+        vtkOutputWindowDisplayWarningText(static_cast<const char*>(message));
+      }
+    });
+  for (vtkAlgorithm* filter : { static_cast<vtkAlgorithm*>(this->TangentFrame),
+         static_cast<vtkAlgorithm*>(this->ReliefTextureFilter) })
+  {
+    filter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
+    filter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
+  }
 }
 
 vtkOpenGLReliefMapper::~vtkOpenGLReliefMapper() = default;
@@ -156,8 +186,11 @@ void vtkOpenGLReliefMapper::SetBinarySteps(int steps)
 
 void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
 {
-  this->DepthScale = depthScale;
-  this->WarnedFlatDepthScale = false;
+  if (depthScale != this->DepthScale)
+  {
+    this->DepthScale = depthScale;
+    this->WarnedFlatDepthScale = false;
+  }
 }
 
 void vtkOpenGLReliefMapper::SetSelfShadowing(bool enabled)
@@ -303,28 +336,32 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
 
 void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
 {
-  // remapping calls Modified(), which rebuilds the buffers: only when names change
+  // Remapping calls Modified(), which rebuilds the buffers: only when a name changes.
+  // Mappings of the user's own are left alone.
   vtkPointData* pointData = this->CurrentInput->GetPointData();
-  const std::map<std::string, std::string> wanted = relief
-    ? std::map<std::string, std::string>{ { NormalAttribute, pointData->GetNormals()->GetName() },
-        { TangentAttribute, pointData->GetTangents()->GetName() },
-        { TCoordAttribute, pointData->GetTCoords()->GetName() },
-        { TextureScaleAttribute, vtkReliefTangentFrameFilter::TextureScaleArrayName() } }
-    : std::map<std::string, std::string>{};
-  std::map<std::string, std::string> current;
-  for (const auto& attribute : this->ExtraAttributes)
+  const std::pair<const char*, const char*> reliefAttributes[] = {
+    { NormalAttribute, relief ? pointData->GetNormals()->GetName() : nullptr },
+    { TangentAttribute, relief ? pointData->GetTangents()->GetName() : nullptr },
+    { TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr },
+    { TextureScaleAttribute,
+      relief ? vtkReliefTangentFrameFilter::TextureScaleArrayName() : nullptr },
+  };
+  for (const auto& attribute : reliefAttributes)
   {
-    current[attribute.first] = attribute.second.DataArrayName;
-  }
-  if (current == wanted)
-  {
-    return;
-  }
-  this->RemoveAllVertexAttributeMappings();
-  for (const auto& attribute : wanted)
-  {
-    this->MapDataArrayToVertexAttribute(attribute.first.c_str(), attribute.second.c_str(),
-      vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    const auto mapped = this->ExtraAttributes.find(attribute.first);
+    const bool isMapped = mapped != this->ExtraAttributes.end();
+    if (!attribute.second)
+    {
+      if (isMapped)
+      {
+        this->RemoveVertexAttributeMapping(attribute.first);
+      }
+    }
+    else if (!isMapped || mapped->second.DataArrayName != attribute.second)
+    {
+      this->MapDataArrayToVertexAttribute(
+        attribute.first, attribute.second, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
   }
 }
 
@@ -400,6 +437,10 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   std::string declarations = vtkReliefFragmentDec;
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search", vtkReliefSearch);
+  // VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit,
+  // unless that slot carries the colour coordinates of scalars mapped through a texture.
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
+    this->ColorTextureMap ? "" : "#define tcoordVCVSOutput reliefHitTCoord");
   std::string fragmentSource = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
     "//VTK::Edges::Dec\n" + this->GetSearchDefines() + declarations);
@@ -421,6 +462,18 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
     "  }\n"
     "  //VTK::DepthPeeling::Impl");
   shaders[vtkShader::Fragment]->SetSource(fragmentSource);
+
+  // With a geometry shader (edges, wide lines) VTK renames the fragment inputs from
+  // VSOutput to GSOutput: pass the frame through it.
+  std::string geometrySource = shaders[vtkShader::Geometry]->GetSource();
+  if (!geometrySource.empty())
+  {
+    vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Dec",
+      std::string("//VTK::Normal::Dec\n") + vtkReliefGeometryDec);
+    vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Impl",
+      std::string("//VTK::Normal::Impl\n") + vtkReliefGeometryImpl);
+    shaders[vtkShader::Geometry]->SetSource(geometrySource);
+  }
 
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 
@@ -450,7 +503,7 @@ void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShad
 {
   if (lightComplexity < 2)
   {
-    return; // unlit, or a headlight: it sees exactly what the camera sees, no self-shadow
+    return; // unlit, or a headlight: it lights what the camera sees, no self-shadow
   }
   // Each light's diffuse term of VTK's (non-PBR) lighting code is weighted by the
   // visibility of that light from the hit; the specular term follows through sign(df).
@@ -468,8 +521,12 @@ void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShad
     "reliefShadow(-vertLightDirectionVC);");
   if (shadowed == source && !anyPositional)
   {
-    vtkWarningMacro("Self-shadowing is not available with this lighting model "
-                    "(physically based interpolation); the relief is lit without it.");
+    if (this->SelfShadowing && !this->WarnedNoSelfShadowing)
+    {
+      this->WarnedNoSelfShadowing = true;
+      vtkWarningMacro("Self-shadowing is not available with this lighting model "
+                      "(physically based interpolation); the relief is lit without it.");
+    }
     return;
   }
   fragmentShader->SetSource(shadowed);
@@ -563,4 +620,6 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HeightMap: " << this->GetHeightMap() << "\n";
   os << indent << "ReliefTextureFilter:\n";
   this->ReliefTextureFilter->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "TangentFrame:\n";
+  this->TangentFrame->PrintSelf(os, indent.GetNextIndent());
 }

@@ -27,6 +27,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkReliefRenderingModule.h"
 
+class vtkCallbackCommand;
 class vtkImageData;
 class vtkMatrix3x3;
 class vtkReliefTangentFrameFilter;
@@ -159,6 +160,7 @@ protected:
   bool DepthCorrection = true;
   int DisplayMode = SHADED;
 
+  vtkNew<vtkCallbackCommand> ForwardMessages;
   vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
   vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth), read at the hit
@@ -170,6 +172,7 @@ protected:
   vtkMTimeType CheckedSurfaceTime = 0;
   bool WarnedMissingHeightMap = false;
   bool WarnedFlatDepthScale = false;
+  bool WarnedNoSelfShadowing = false;
 
 private:
   vtkOpenGLReliefMapper(const vtkOpenGLReliefMapper&) = delete;

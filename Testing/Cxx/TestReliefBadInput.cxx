@@ -6,6 +6,7 @@
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
+#include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -16,6 +17,7 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSphereSource.h"
 
 #include <cmath>
@@ -41,21 +43,22 @@ struct Outcome
   std::vector<std::string> Messages;
 };
 
+// One window for every case: opening many X connections in a row is itself flaky.
+vtkRenderWindow* Window = nullptr;
+
 // Renders `surface` twice with `mapper` and reports what the window shows and what the
-// mapper and its relief texture filter said.
+// mapper said.
 Outcome Render(vtkPolyData* surface, vtkOpenGLReliefMapper* mapper)
 {
   vtkNew<ReliefEventRecorder> recorder;
-  for (vtkObject* speaker : { static_cast<vtkObject*>(mapper),
-         static_cast<vtkObject*>(mapper->GetReliefTextureFilter()) })
-  {
-    speaker->AddObserver(vtkCommand::ErrorEvent, recorder);
-    speaker->AddObserver(vtkCommand::WarningEvent, recorder);
-  }
+  // the mapper reports its internal filters' messages as its own
+  mapper->AddObserver(vtkCommand::ErrorEvent, recorder);
+  mapper->AddObserver(vtkCommand::WarningEvent, recorder);
   mapper->SetInputData(surface);
   mapper->SetDisplayModeToSampleCount();
 
-  vtkNew<vtkRenderWindow> window;
+  vtkRenderWindow* window = Window;
+  window->GetRenderers()->RemoveAllItems();
   auto renderer = ReliefScene::LitRenderer(window, 160, 120);
   renderer->SetBackground(0.0, 0.0, 1.0);
   vtkNew<vtkActor> actor;
@@ -143,6 +146,26 @@ void MeshWithoutTextureCoordinates()
   Check(Contains(outcome, "vtkTextureMapToPlane") && Contains(outcome, "vtkTextureMapToSphere"),
     "the error names the filters that make texture coordinates");
   Check(outcome.Pixels.Plain > 2000 && outcome.Pixels.Relief == 0, "the sphere still renders plainly");
+}
+
+void MeshWithLinesAndVertices()
+{
+  // a square with a line along one edge: relief on the triangles, no crash
+  auto square = ReliefScene::Square(2.0);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType edge[2] = { 0, 1 };
+  lines->InsertNextCell(2, edge);
+  square->SetLines(lines);
+  Outcome outcome = Render(square, BricksMapper());
+  Check(outcome.Errors == 0, "lines beside polygons are no error");
+  Check(outcome.Pixels.Relief > Covered, "relief is drawn on the polygons of a mesh with lines");
+
+  auto linesOnly = vtkSmartPointer<vtkPolyData>::New();
+  linesOnly->SetPoints(square->GetPoints());
+  linesOnly->GetPointData()->SetTCoords(square->GetPointData()->GetTCoords());
+  linesOnly->SetLines(lines);
+  outcome = Render(linesOnly, BricksMapper());
+  Check(outcome.Errors == 1 && Contains(outcome, "no polygons"), "one error for lines alone");
 }
 
 void MeshWithoutNormals()
@@ -237,7 +260,10 @@ void StepsOutOfRange()
 
 int TestReliefBadInput(int, char*[])
 {
+  vtkNew<vtkRenderWindow> window;
+  Window = window;
   MeshWithoutTextureCoordinates();
+  MeshWithLinesAndVertices();
   MeshWithoutNormals();
   NoHeightMap();
   HeightMapNot2D();

@@ -173,15 +173,17 @@ TEST_F(ReliefSearch, StepWallStopsTheRayAtItsFace)
 
 TEST_F(ReliefSearch, FlatSurfaceNeverShadowsItself)
 {
-  this->Use(DepthField::FromFunction(32, 32, [](float, float) { return 0.6f; }));
+  // the floor's depth falls inside a linear step, so Linear's hit lies below it
+  this->Use(DepthField::FromFunction(32, 32, [](float, float) { return 0.63f; }));
   std::mt19937 generator(5);
-  std::uniform_real_distribution<float> coordinate(0.0f, 1.0f);
   std::uniform_real_distribution<float> slope(-3.0f, 3.0f);
-  for (int i = 0; i < RayCount; ++i)
+  for (const ReliefRay& ray : RandomViewRays(0.0f, 1.0f, 2.0f, 7))
   {
-    const vec3 hit(coordinate(generator), coordinate(generator), 0.6f);
     const vec3 toLight(slope(generator), slope(generator), -1.0f);
-    ASSERT_EQ(reliefLightVisibility(hit, toLight, 10), 1.0f);
+    const ReliefHit linear = reliefSearchLinear(ray, 10);
+    ASSERT_EQ(reliefLightVisibility(linear.clear, toLight, 10), 1.0f);
+    const ReliefHit linearBinary = reliefSearchLinearBinary(ray, 10, 5);
+    ASSERT_EQ(reliefLightVisibility(linearBinary.clear, toLight, 10), 1.0f);
   }
 }
 
@@ -190,7 +192,7 @@ TEST_F(ReliefSearch, WallCastsAShadowOnlyAwayFromTheLight)
   // a full-height wall at u in [0.45, 0.55] over a floor at depth 0.5
   this->Use(DepthField::FromFunction(
     256, 4, [](float u, float) { return (u > 0.45f && u < 0.55f) ? 0.0f : 0.5f; }));
-  const vec3 rightOfWall(0.62f, 0.5f, 0.5f);
+  const vec3 rightOfWall(0.62f, 0.5f, 0.49f); // a clear point just above the floor
   EXPECT_EQ(reliefLightVisibility(rightOfWall, vec3(-1.0f, 0.0f, -1.0f), 10), 0.0f);
   EXPECT_EQ(reliefLightVisibility(rightOfWall, vec3(1.0f, 0.0f, -1.0f), 10), 1.0f);
   EXPECT_EQ(reliefLightVisibility(rightOfWall, vec3(-0.01f, 0.0f, -1.0f), 10), 1.0f);
@@ -214,6 +216,7 @@ TEST_F(ReliefSearch, DomesLitFromALowAngleHaveNoShadowAcne)
   for (const ReliefRay& ray : RandomViewRays(0.25f, 0.75f, 0.6f, 6))
   {
     const ReliefHit hit = reliefSearchLinearBinary(ray, 32, 5);
+    const ReliefHit coarse = reliefSearchLinear(ray, 32);
     const vec2 offset = vec2(hit.position.x - 0.5f, hit.position.y - 0.5f) / radius;
     const float r2 = dot(offset, offset);
     if (r2 > 0.9f)
@@ -228,8 +231,10 @@ TEST_F(ReliefSearch, DomesLitFromALowAngleHaveNoShadowAcne)
       continue;
     }
     ++litChecked;
-    ASSERT_EQ(reliefLightVisibility(hit.position, toLight, 32), 1.0f)
+    ASSERT_EQ(reliefLightVisibility(hit.clear, toLight, 32), 1.0f)
       << "at (" << hit.position.x << ", " << hit.position.y << ", " << hit.position.z << ")";
+    ASSERT_EQ(reliefLightVisibility(coarse.clear, toLight, 32), 1.0f)
+      << "Linear at (" << coarse.position.x << ", " << coarse.position.y << ")";
   }
   EXPECT_GT(litChecked, 1000);
 }

@@ -3,6 +3,7 @@
 #include "ReliefEventRecorder.h"
 #include "vtkReliefTangentFrameFilter.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
@@ -13,6 +14,8 @@
 #include "vtkSphereSource.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace
 {
@@ -148,4 +151,86 @@ TEST(ReliefTangentFrameFilter, MeshWithoutTextureCoordinatesIsAnErrorAndPassesTh
   EXPECT_FALSE(filter->GetHasTangentFrame());
   EXPECT_EQ(frame->GetNumberOfPoints(), sphere->GetOutput()->GetNumberOfPoints());
   EXPECT_EQ(Scale(frame), nullptr);
+}
+
+TEST(ReliefTangentFrameFilter, LinesAndVerticesAreLeftOutAndLinesAloneAreAnError)
+{
+  // the rectangle plus a line and a vertex: the frame is built on the triangles alone
+  auto mixed = Rectangle(1.0, 1.0);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 3 };
+  lines->InsertNextCell(2, line);
+  mixed->SetLines(lines);
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vertex[1] = { 1 };
+  verts->InsertNextCell(1, vertex);
+  mixed->SetVerts(verts);
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, mixed);
+  ASSERT_TRUE(filter->GetHasTangentFrame());
+  EXPECT_EQ(frame->GetNumberOfPolys(), 2);
+  EXPECT_EQ(frame->GetNumberOfLines() + frame->GetNumberOfVerts(), 0);
+
+  auto linesOnly = vtkSmartPointer<vtkPolyData>::New();
+  linesOnly->SetPoints(mixed->GetPoints());
+  linesOnly->GetPointData()->SetTCoords(mixed->GetPointData()->GetTCoords());
+  linesOnly->SetLines(lines);
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
+  Frame(filter, linesOnly);
+  EXPECT_FALSE(filter->GetHasTangentFrame());
+  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
+  EXPECT_TRUE(recorder->AnyMessageContains("no polygons"));
+}
+
+TEST(ReliefTangentFrameFilter, TrianglesWithoutTextureAreaGiveAFiniteFrame)
+{
+  // a 3 x 3 grid whose centre point takes the texture coordinates of its neighbour:
+  // the triangles around it lose texture area on one side
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(3, 3);
+  plane->Update();
+  auto grid = vtkSmartPointer<vtkPolyData>::New();
+  grid->DeepCopy(plane->GetOutput());
+  vtkDataArray* tcoords = grid->GetPointData()->GetTCoords();
+  tcoords->SetTuple(5, tcoords->GetTuple(6));
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, grid);
+  ASSERT_TRUE(filter->GetHasTangentFrame());
+  vtkDataArray* tangents = frame->GetPointData()->GetTangents();
+  for (vtkIdType i = 0; i < frame->GetNumberOfPoints(); ++i)
+  {
+    double length = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      ASSERT_TRUE(std::isfinite(tangents->GetComponent(i, c)));
+      length += tangents->GetComponent(i, c) * tangents->GetComponent(i, c);
+    }
+    EXPECT_NEAR(length, 1.0, 1e-5);
+    EXPECT_NEAR(tangents->GetComponent(i, 2), 0.0, 1e-6); // in the plane of the grid
+    ASSERT_TRUE(std::isfinite(Scale(frame)->GetComponent(i, 0)));
+    ASSERT_TRUE(std::isfinite(Scale(frame)->GetComponent(i, 1)));
+  }
+}
+
+TEST(ReliefTangentFrameFilter, GivenTangentsAreMadeUnitAndPerpendicular)
+{
+  // long tangents tilted out of the plane
+  auto rectangle = Rectangle(1.0, 1.0);
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < rectangle->GetNumberOfPoints(); ++i)
+  {
+    tangents->InsertNextTuple3(3.0, 0.0, 2.0);
+  }
+  rectangle->GetPointData()->SetTangents(tangents);
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkPolyData* frame = Frame(filter, rectangle);
+  vtkDataArray* unit = frame->GetPointData()->GetTangents();
+  for (vtkIdType i = 0; i < frame->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_NEAR(unit->GetComponent(i, 0), 1.0, 1e-6);
+    EXPECT_NEAR(unit->GetComponent(i, 2), 0.0, 1e-6);
+    EXPECT_NEAR(Scale(frame)->GetComponent(i, 0), 1.0, 1e-6);
+  }
 }

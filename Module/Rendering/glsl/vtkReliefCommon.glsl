@@ -18,6 +18,7 @@ struct ReliefHit
 {
   vec3 position; // (u, v, depth) of the first intersection
   float t;       // its ray parameter
+  vec3 clear;    // the last ray point the search found above the field (or the start)
   bool hit;      // false when the ray leaves the search range without meeting the field
   int samples;   // height samples the search took
 };

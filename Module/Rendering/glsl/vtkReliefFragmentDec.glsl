@@ -11,11 +11,11 @@ uniform int reliefSelfShadowing;
 uniform int reliefDepthCorrection;
 uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
 uniform mat4 reliefVCDCMatrix;
-in vec3 reliefPositionVC;
-in vec3 reliefNormalVC;
-in vec3 reliefTangentVC;
-in vec2 reliefTCoord;
-in vec2 reliefTextureScaleVC;
+in vec3 reliefPositionVSOutput;
+in vec3 reliefNormalVSOutput;
+in vec3 reliefTangentVSOutput;
+in vec2 reliefTCoordVSOutput;
+in vec2 reliefTextureScaleVSOutput;
 
 // Derivatives of the entry coordinates, taken once outside the search loops: every read
 // at a ray point uses the mipmap level they give, exactly the level textureGrad with
@@ -64,8 +64,7 @@ float reliefShadow(vec3 toLightVC)
   {
     return 1.0;
   }
-  return reliefLightVisibility(reliefViewHit.position, reliefToTexture(toLightVC), reliefLinearSteps);
+  return reliefLightVisibility(reliefViewHit.clear, reliefToTexture(toLightVC), reliefLinearSteps);
 }
 
-// VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit.
-#define tcoordVCVSOutput reliefHitTCoord
+//VTK::Relief::TCoordAtHit

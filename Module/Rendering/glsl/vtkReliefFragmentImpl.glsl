@@ -1,25 +1,30 @@
   // frame: the fragment's view ray in relief texture space (seed 000 s3.4)
-  reliefGradX = dFdx(reliefTCoord);
-  reliefGradY = dFdy(reliefTCoord);
+  reliefGradX = dFdx(reliefTCoordVSOutput);
+  reliefGradY = dFdy(reliefTCoordVSOutput);
   reliefLod = reliefLevel(reliefTextureSize);
-  reliefFrameN = normalize(reliefNormalVC);
-  if (gl_FrontFacing == false) { reliefFrameN = -reliefFrameN; }
-  reliefFrameT = normalize(reliefTangentVC - reliefFrameN * dot(reliefFrameN, reliefTangentVC));
+  reliefFrameN = normalize(reliefNormalVSOutput);
+  reliefFrameT = normalize(
+    reliefTangentVSOutput - reliefFrameN * dot(reliefFrameN, reliefTangentVSOutput));
   reliefFrameB = cross(reliefFrameN, reliefFrameT);
-  reliefScale = reliefTextureScaleVC;
+  // seen from behind, the relief is carved into the back: the normal turns, the
+  // texture axes stay
+  if (gl_FrontFacing == false) { reliefFrameN = -reliefFrameN; }
+  reliefScale = reliefTextureScaleVSOutput;
   if (abs(reliefScale.x) < 1e-20) { reliefScale.x = 1e-20; }
   if (abs(reliefScale.y) < 1e-20) { reliefScale.y = 1e-20; }
-  vec3 reliefViewVC = cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVC);
+  vec3 reliefViewVC =
+    cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
 
   // search
   if (reliefDepthScale > 0.0)
   {
-    ReliefRay reliefViewRayTS = reliefViewRay(reliefTCoord, reliefToTexture(reliefViewVC));
+    ReliefRay reliefViewRayTS = reliefViewRay(reliefTCoordVSOutput, reliefToTexture(reliefViewVC));
     reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
   }
   else
   {
-    reliefViewHit.position = vec3(reliefTCoord, 0.0);
+    reliefViewHit.position = vec3(reliefTCoordVSOutput, 0.0);
+    reliefViewHit.clear = reliefViewHit.position;
     reliefViewHit.t = 0.0;
     reliefViewHit.hit = true;
     reliefViewHit.samples = 0;
@@ -27,11 +32,12 @@
 
   // shade: hit point, relief normal rebuilt with the live scales, true depth
   vec2 reliefHitTCoord = reliefViewHit.position.xy;
-  // Textures repeat with period 1: bring the hit back within a tile of the entry, since
-  // Mesa's llvmpipe stalls on mipmapped 8-bit reads far from it (grazing rays run far).
-  reliefHitTCoord -= floor(reliefHitTCoord - reliefTCoord);
+  // Textures repeat with period 1: bring the hit back within half a tile of the entry
+  // (Mesa's llvmpipe stalls on mipmapped 8-bit reads far from it; grazing rays run far).
+  // A colour texture that does not repeat reads right wherever the hit stays that close.
+  reliefHitTCoord -= round(reliefHitTCoord - reliefTCoordVSOutput);
   float reliefDescent = max(-dot(reliefViewVC, reliefFrameN), 1e-6);
-  vec3 reliefHitVC = reliefPositionVC +
+  vec3 reliefHitVC = reliefPositionVSOutput +
     reliefViewVC * (reliefViewHit.position.z * max(reliefDepthScale, 0.0) / reliefDescent);
   vec4 reliefTexel = textureLod(reliefTexture, reliefHitTCoord, reliefLod);
   vec2 reliefSlope = reliefTexel.xy / (max(reliefTexel.z, 1e-4) * reliefNormalRatio) *

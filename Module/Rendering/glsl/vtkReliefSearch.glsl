@@ -36,11 +36,12 @@ ReliefBracket reliefLinearBracket(ReliefRay ray, int steps)
   return bracket;
 }
 
-ReliefHit reliefHitAt(ReliefRay ray, float t, bool found, int samples)
+ReliefHit reliefHitAt(ReliefRay ray, float t, float above, bool found, int samples)
 {
   ReliefHit result;
   result.t = t;
   result.position = reliefRayAt(ray, t);
+  result.clear = reliefRayAt(ray, above);
   result.hit = found;
   result.samples = samples;
   return result;
@@ -50,7 +51,7 @@ ReliefHit reliefHitAt(ReliefRay ray, float t, bool found, int samples)
 ReliefHit reliefSearchLinear(ReliefRay ray, int linearSteps)
 {
   ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
-  return reliefHitAt(ray, bracket.below, bracket.found, bracket.samples);
+  return reliefHitAt(ray, bracket.below, bracket.above, bracket.found, bracket.samples);
 }
 
 // Bisection inside a bracket: halves the interval `steps` times and returns its middle.
@@ -72,7 +73,7 @@ ReliefHit reliefBinaryRefine(ReliefRay ray, ReliefBracket bracket, int steps)
       above = middle;
     }
   }
-  return reliefHitAt(ray, 0.5f * (above + below), bracket.found, samples);
+  return reliefHitAt(ray, 0.5f * (above + below), above, bracket.found, samples);
 }
 
 // Linear then binary search (Policarpo et al. 2005; 10 + 5 steps by default).
@@ -81,7 +82,7 @@ ReliefHit reliefSearchLinearBinary(ReliefRay ray, int linearSteps, int binarySte
   ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
   if (!bracket.found)
   {
-    return reliefHitAt(ray, 1.0f, false, bracket.samples);
+    return reliefHitAt(ray, 1.0f, bracket.above, false, bracket.samples);
   }
   return reliefBinaryRefine(ray, bracket, binarySteps);
 }
@@ -97,21 +98,20 @@ ReliefHit reliefSearch(ReliefRay ray, int linearSteps, int binarySteps)
 }
 
 // Self-shadowing: is the hit lit by a light in texture-space direction lightDirection?
-// The light ray is searched from where it enters the relief down to a point half a
-// linear step above the hit: the search put the hit within that of the surface, so
-// meeting the field on the way means the light is blocked, not that the hit is.
-float reliefLightVisibility(vec3 hitPosition, vec3 lightDirection, int steps)
+// The light ray is searched from where it enters the relief down to the hit's clear
+// point, the last point the view search found above the field: meeting the field on
+// the way means the light is blocked. (Aiming at the hit itself, which the search puts
+// on or just below the surface, would let the surface shadow itself.)
+float reliefLightVisibility(vec3 clearPoint, vec3 lightDirection, int steps)
 {
   if (lightDirection.z >= 0.0f)
   {
     return 0.0f; // the light is below the surface plane
   }
-  float bias = 0.5f / float(steps);
-  if (hitPosition.z <= bias)
+  if (clearPoint.z <= 0.0f)
   {
     return 1.0f; // nothing of the relief rises above its top
   }
-  vec3 target = vec3(hitPosition.x, hitPosition.y, hitPosition.z - bias);
-  ReliefBracket bracket = reliefLinearBracket(reliefLightRay(target, lightDirection), steps);
+  ReliefBracket bracket = reliefLinearBracket(reliefLightRay(clearPoint, lightDirection), steps);
   return bracket.found ? 0.0f : 1.0f;
 }

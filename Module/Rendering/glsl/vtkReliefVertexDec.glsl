@@ -6,8 +6,8 @@ in vec2 reliefTCoordMC;
 in vec2 reliefTextureScaleMC; // model length of one texture unit along tangent, bitangent
 uniform mat3 reliefDirectionMatrix; // model to view for directions, without VBO shift/scale
 uniform mat3 reliefNormalMatrix;    // its inverse transpose
-out vec3 reliefPositionVC;
-out vec3 reliefNormalVC;
-out vec3 reliefTangentVC;
-out vec2 reliefTCoord;
-out vec2 reliefTextureScaleVC;
+out vec3 reliefPositionVSOutput;
+out vec3 reliefNormalVSOutput;
+out vec3 reliefTangentVSOutput;
+out vec2 reliefTCoordVSOutput;
+out vec2 reliefTextureScaleVSOutput;

@@ -1,9 +1,14 @@
-  reliefPositionVC = (MCVCMatrix * vertexMC).xyz;
-  reliefNormalVC = reliefNormalMatrix * reliefNormalMC;
-  vec3 reliefTangentView = reliefDirectionMatrix * reliefTangentMC;
-  vec3 reliefBitangentView = reliefDirectionMatrix * cross(reliefNormalMC, reliefTangentMC);
-  reliefTangentVC = reliefTangentView;
+  reliefPositionVSOutput = (MCVCMatrix * vertexMC).xyz;
+  reliefNormalVSOutput = reliefNormalMatrix * reliefNormalMC;
+  // unit, perpendicular model axes: only the actor's transform may stretch them
+  vec3 reliefUnitNormalMC = normalize(reliefNormalMC);
+  vec3 reliefUnitTangentMC = normalize(reliefTangentMC -
+    reliefUnitNormalMC * dot(reliefUnitNormalMC, reliefTangentMC));
+  vec3 reliefTangentView = reliefDirectionMatrix * reliefUnitTangentMC;
+  vec3 reliefBitangentView =
+    reliefDirectionMatrix * cross(reliefUnitNormalMC, reliefUnitTangentMC);
+  reliefTangentVSOutput = reliefTangentView;
   // an actor's scale stretches the tile as seen from the camera: carry it into s_x, s_y
-  reliefTextureScaleVC = reliefTextureScaleMC *
+  reliefTextureScaleVSOutput = reliefTextureScaleMC *
     vec2(length(reliefTangentView), length(reliefBitangentView));
-  reliefTCoord = reliefTCoordMC;
+  reliefTCoordVSOutput = reliefTCoordMC;
