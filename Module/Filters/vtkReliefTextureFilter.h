@@ -25,9 +25,11 @@
  * texels a depth of 1 spans. It is the normal of the surface
  * (i, j, -r * depth): where depth grows toward +x the normal leans to +x. The
  * mapper rebuilds the depth gradient as n.xy / (n.z * r) and relights it with
- * its own depth scale, so r sets the encoding precision, never the look.
- * UseInputNormals takes the normal from the input's first three components
- * instead (a normal map with the height in alpha).
+ * its own depth scale, so for computed normals r sets the encoding precision,
+ * never the look. UseInputNormals takes the normal from the input's first three
+ * components instead (a normal map with the height in alpha); the mapper then
+ * reads it the same way, so r must say how many texels deep the normal map's
+ * author took a depth of 1 to be: r sets how steep such a map looks.
  *
  * The input must be 2D (one slice) with point scalars; anything else gives an
  * error and an empty output.

@@ -85,7 +85,6 @@ int TestReliefSampleCount(int, char*[])
   mapper->SetLinearSteps(10);
   Counts linear = SampleCounts(window);
   check(linear.Minimum >= 1 && linear.Maximum <= 10, "Linear takes 1 to 10");
-  check(linear.Mean < linearBinary.Mean, "Linear is cheaper than LinearBinary");
 
   mapper->SetSearchMethodToLinearBinary();
   mapper->SetBinarySteps(5);
