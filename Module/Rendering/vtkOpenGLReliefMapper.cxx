@@ -52,11 +52,12 @@ constexpr const char* TangentAttribute = "reliefTangentMC";
 constexpr const char* TCoordAttribute = "reliefTCoordMC";
 constexpr const char* TextureScaleAttribute = "reliefTextureScaleMC";
 
-// A repeating, trilinearly filtered 2D texture of `values` (one or four components).
+// A repeating, trilinearly filtered 2D texture of `values` in `internalFormat`.
 bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
-  const int dimensions[3], vtkDataArray* values)
+  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat)
 {
   texture->SetContext(window);
+  texture->SetInternalFormat(internalFormat);
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
   texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
@@ -311,8 +312,9 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return true;
   }
 
-  // The searches read depth only: a one-channel copy costs them a quarter of the
-  // texel traffic of the four-channel relief texture, read once per pixel for shading.
+  // The searches read depth only: a one-channel 32-bit copy costs them a quarter of the
+  // texel traffic of the relief texture, which is read once per pixel, for its normal:
+  // half floats are plenty there (12 bytes a texel in all instead of 20).
   const vtkIdType texelCount = relief->GetNumberOfPoints();
   vtkNew<vtkFloatArray> depths;
   depths->SetNumberOfValues(texelCount);
@@ -323,8 +325,8 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   int dimensions[3];
   relief->GetDimensions(dimensions);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!UploadMipmappedTexture(this->ReliefTexture, window, dimensions, texels) ||
-    !UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths))
+  if (!UploadMipmappedTexture(this->ReliefTexture, window, dimensions, texels, GL_RGBA16F) ||
+    !UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths, GL_R32F))
   {
     vtkErrorMacro("Could not upload the " << dimensions[0] << "x" << dimensions[1]
                                           << " relief texture to the GPU.");

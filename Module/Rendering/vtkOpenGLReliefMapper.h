@@ -163,7 +163,7 @@ protected:
   vtkNew<vtkCallbackCommand> ForwardMessages;
   vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
-  vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth), read at the hit
+  vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth) in half floats, for normals
   vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
   vtkTimeStamp ReliefTextureUploadTime;
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
