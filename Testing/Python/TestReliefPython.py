@@ -1,7 +1,7 @@
 """Tests of vtkRelief's wrapped API: classes, properties, the reader and the relief
 texture, and a sample-count render read back into numpy.
 
-Run by ctest as: TestReliefPython.py -D <Data dir> -V <baseline png> -T <temp dir>,
+Run by ctest as: TestReliefPython.py -D <Data dir> -T <temp dir>,
 with VTK's /usr/bin/python3 and PYTHONPATH set to the built vtkrelief package.
 """
 import argparse
