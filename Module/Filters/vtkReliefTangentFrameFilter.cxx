@@ -188,7 +188,9 @@ int vtkReliefTangentFrameFilter::RequestData(
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
   if (!tcoords || tcoords->GetNumberOfComponents() < 2)
   {
-    vtkErrorMacro(<< MissingTextureCoordinatesAdvice());
+    vtkErrorMacro("The mesh has no 2D point texture coordinates, so relief has nowhere to go "
+                  "and the mesh is drawn without it. Map some first with vtkTextureMapToPlane, "
+                  "vtkTextureMapToCylinder or vtkTextureMapToSphere.");
     output->ShallowCopy(input);
     return 1;
   }

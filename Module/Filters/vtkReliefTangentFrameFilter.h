@@ -27,14 +27,6 @@ public:
   vtkTypeMacro(vtkReliefTangentFrameFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// What to do about a mesh without texture coordinates.
-  static const char* MissingTextureCoordinatesAdvice()
-  {
-    return "The mesh has no 2D point texture coordinates, so relief has nowhere to go. "
-           "Map some first with vtkTextureMapToPlane, vtkTextureMapToCylinder or "
-           "vtkTextureMapToSphere.";
-  }
-
   /// Name of the two-component point array holding (s_x, s_y).
   static const char* TextureScaleArrayName() { return "ReliefTextureScale"; }
 

@@ -248,19 +248,9 @@ vtkPolyData* vtkOpenGLReliefMapper::GetReliefSurface()
 //------------------------------------------------------------------------------
 bool vtkOpenGLReliefMapper::UpdateReliefSurface()
 {
-  vtkPolyData* input = this->CurrentInput;
-  if (!input->GetPointData()->GetTCoords())
-  {
-    // once per change of the input, not once per frame
-    if (input->GetMTime() != this->CheckedSurfaceTime)
-    {
-      this->CheckedSurfaceTime = input->GetMTime();
-      vtkErrorMacro(<< vtkReliefTangentFrameFilter::MissingTextureCoordinatesAdvice()
-                    << " The mesh is drawn without relief.");
-    }
-    return false;
-  }
-  this->TangentFrame->SetInputData(input);
+  // a mesh it cannot frame (no texture coordinates, no polygons) is an error of the
+  // filter, reported through the mapper once per change of the mesh
+  this->TangentFrame->SetInputData(this->CurrentInput);
   this->TangentFrame->Update();
   if (!this->TangentFrame->GetHasTangentFrame())
   {

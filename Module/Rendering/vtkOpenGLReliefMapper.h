@@ -169,7 +169,6 @@ protected:
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
   bool DrawingRelief = false;
-  vtkMTimeType CheckedSurfaceTime = 0;
   bool WarnedMissingHeightMap = false;
   bool WarnedFlatDepthScale = false;
   bool WarnedNoSelfShadowing = false;

@@ -64,7 +64,8 @@ float reliefShadow(vec3 toLightVC)
   {
     return 1.0;
   }
-  return reliefLightVisibility(reliefViewHit.clear, reliefToTexture(toLightVC), reliefLinearSteps);
+  return reliefLightVisibility(
+    reliefViewHit.clear, reliefToTexture(toLightVC), reliefLinearSteps);
 }
 
 //VTK::Relief::TCoordAtHit

@@ -18,7 +18,8 @@
   // search
   if (reliefDepthScale > 0.0)
   {
-    ReliefRay reliefViewRayTS = reliefViewRay(reliefTCoordVSOutput, reliefToTexture(reliefViewVC));
+    ReliefRay reliefViewRayTS =
+      reliefViewRay(reliefTCoordVSOutput, reliefToTexture(reliefViewVC));
     reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
   }
   else
