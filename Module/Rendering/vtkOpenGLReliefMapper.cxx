@@ -419,13 +419,47 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   const int lightComplexity = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity;
 
   // Insertions keep VTK's tags, so VTK's own code still lands before ours.
+  this->InsertReliefVertexShader(shaders[vtkShader::Vertex]);
+  this->InsertReliefFragmentShader(shaders[vtkShader::Fragment], lightComplexity);
+  this->InsertReliefGeometryShader(shaders[vtkShader::Geometry]);
+
+  this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+
+  // VTK declares the model-to-view matrix only for lit surfaces.
   std::string vertexSource = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vertexSource, "//VTK::Relief::CameraDec",
+    vertexSource.find("uniform mat4 MCVCMatrix;") == std::string::npos
+      ? "uniform mat4 MCVCMatrix;"
+      : "");
+  shaders[vtkShader::Vertex]->SetSource(vertexSource);
+
+  this->ReplaceReliefLightVisibility(shaders[vtkShader::Fragment], lightComplexity);
+  this->ReplaceReliefTextureReads(shaders[vtkShader::Fragment]);
+}
+
+void vtkOpenGLReliefMapper::ReplaceReliefTextureReads(vtkShader* fragmentShader)
+{
+  // VTK reads the actor's textures with implicit derivatives, which jump wherever the
+  // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
+  // them at the level of the entry coordinates, as the relief itself is read.
+  const std::regex implicitRead(R"(texture\((\w+), tcoordVCVSOutput\))");
+  fragmentShader->SetSource(std::regex_replace(
+    fragmentShader->GetSource(), implicitRead, "reliefTextureAtRay($1, tcoordVCVSOutput)"));
+}
+
+void vtkOpenGLReliefMapper::InsertReliefVertexShader(vtkShader* vertexShader)
+{
+  std::string vertexSource = vertexShader->GetSource();
   vtkShaderProgram::Substitute(vertexSource, "//VTK::PositionVC::Dec",
     std::string("//VTK::PositionVC::Dec\n") + vtkReliefVertexDec);
   vtkShaderProgram::Substitute(vertexSource, "//VTK::CustomEnd::Impl",
     std::string(vtkReliefVertexImpl) + "\n  //VTK::CustomEnd::Impl");
-  shaders[vtkShader::Vertex]->SetSource(vertexSource);
+  vertexShader->SetSource(vertexSource);
+}
 
+void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
+  vtkShader* fragmentShader, int lightComplexity)
+{
   std::string declarations = vtkReliefFragmentDec;
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search", vtkReliefSearch);
@@ -433,7 +467,7 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   // unless that slot carries the colour coordinates of scalars mapped through a texture.
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
     this->ColorTextureMap ? "" : "#define tcoordVCVSOutput reliefHitTCoord");
-  std::string fragmentSource = shaders[vtkShader::Fragment]->GetSource();
+  std::string fragmentSource = fragmentShader->GetSource();
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
     "//VTK::Edges::Dec\n" + this->GetSearchDefines() + declarations);
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
@@ -453,42 +487,22 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
     "    gl_FragData[0] = vec4(min(float(reliefViewHit.samples), 255.0) / 255.0, 0.0, 0.0, 1.0);\n"
     "  }\n"
     "  //VTK::DepthPeeling::Impl");
-  shaders[vtkShader::Fragment]->SetSource(fragmentSource);
+  fragmentShader->SetSource(fragmentSource);
+}
 
+void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader)
+{
   // With a geometry shader (edges, wide lines) VTK renames the fragment inputs from
   // VSOutput to GSOutput: pass the frame through it.
-  std::string geometrySource = shaders[vtkShader::Geometry]->GetSource();
+  std::string geometrySource = geometryShader->GetSource();
   if (!geometrySource.empty())
   {
     vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Dec",
       std::string("//VTK::Normal::Dec\n") + vtkReliefGeometryDec);
     vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Impl",
       std::string("//VTK::Normal::Impl\n") + vtkReliefGeometryImpl);
-    shaders[vtkShader::Geometry]->SetSource(geometrySource);
+    geometryShader->SetSource(geometrySource);
   }
-
-  this->Superclass::ReplaceShaderValues(shaders, ren, actor);
-
-  // VTK declares the model-to-view matrix only for lit surfaces.
-  vertexSource = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vertexSource, "//VTK::Relief::CameraDec",
-    vertexSource.find("uniform mat4 MCVCMatrix;") == std::string::npos
-      ? "uniform mat4 MCVCMatrix;"
-      : "");
-  shaders[vtkShader::Vertex]->SetSource(vertexSource);
-
-  this->ReplaceReliefLightVisibility(shaders[vtkShader::Fragment], lightComplexity);
-  this->ReplaceReliefTextureReads(shaders[vtkShader::Fragment]);
-}
-
-void vtkOpenGLReliefMapper::ReplaceReliefTextureReads(vtkShader* fragmentShader)
-{
-  // VTK reads the actor's textures with implicit derivatives, which jump wherever the
-  // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
-  // them at the level of the entry coordinates, as the relief itself is read.
-  const std::regex implicitRead(R"(texture\((\w+), tcoordVCVSOutput\))");
-  fragmentShader->SetSource(std::regex_replace(
-    fragmentShader->GetSource(), implicitRead, "reliefTextureAtRay($1, tcoordVCVSOutput)"));
 }
 
 void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity)

@@ -148,6 +148,9 @@ protected:
   bool UpdateReliefSurface();
   bool UpdateReliefTexture(vtkRenderer* ren);
   void MapReliefAttributes(bool relief);
+  void InsertReliefVertexShader(vtkShader* vertexShader);
+  void InsertReliefFragmentShader(vtkShader* fragmentShader, int lightComplexity);
+  void InsertReliefGeometryShader(vtkShader* geometryShader);
   void ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity);
   void ReplaceReliefTextureReads(vtkShader* fragmentShader);
   virtual std::string GetSearchDefines();
