@@ -264,7 +264,7 @@ void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height)
   }
 }
 
-double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)
+std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)
 {
   for (int i = 0; i < warmup; ++i)
   {
@@ -281,7 +281,17 @@ double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)
       std::chrono::steady_clock::now() - start;
     milliseconds.push_back(elapsed.count());
   }
-  std::nth_element(milliseconds.begin(), milliseconds.begin() + frames / 2, milliseconds.end());
-  return milliseconds[frames / 2];
+  return milliseconds;
+}
+
+double Median(std::vector<double> values)
+{
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)
+{
+  return Median(FrameMilliseconds(window, warmup, frames));
 }
 }

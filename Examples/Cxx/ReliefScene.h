@@ -71,6 +71,12 @@ void ShowInterpenetration(vtkRenderWindow* window, int width, int height);
 void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height);
 ///@}
 
+/// Wall-clock milliseconds of each of `frames` renders after `warmup` renders.
+std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames);
+
+/// The median of `values` (not empty).
+double Median(std::vector<double> values);
+
 /// Median wall-clock milliseconds of `frames` renders after `warmup` renders.
 double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup = 3, int frames = 20);
 
