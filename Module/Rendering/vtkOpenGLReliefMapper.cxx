@@ -484,7 +484,8 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::DepthPeeling::Impl",
     "if (reliefDisplayMode == 1)\n"
     "  {\n"
-    "    gl_FragData[0] = vec4(min(float(reliefViewHit.samples), 255.0) / 255.0, 0.0, 0.0, 1.0);\n"
+    "    float reliefSamples = min(float(reliefViewHit.samples), 255.0);\n"
+    "    gl_FragData[0] = vec4(reliefSamples / 255.0, 0.0, 0.0, 1.0);\n"
     "  }\n"
     "  //VTK::DepthPeeling::Impl");
   fragmentShader->SetSource(fragmentSource);
@@ -505,7 +506,8 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
   }
 }
 
-void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity)
+void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(
+  vtkShader* fragmentShader, int lightComplexity)
 {
   if (lightComplexity < 2)
   {
@@ -519,13 +521,11 @@ void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(vtkShader* fragmentShad
   std::string shadowed = std::regex_replace(source, directional,
     "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC$1)) * "
     "reliefShadow(-lightDirectionVC$1);");
-  const std::string positional =
-    "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC));";
-  const bool anyPositional = shadowed.find(positional) != std::string::npos;
-  vtkShaderProgram::Substitute(shadowed, positional,
+  vtkShaderProgram::Substitute(shadowed,
+    "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC));",
     "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC)) * "
     "reliefShadow(-vertLightDirectionVC);");
-  if (shadowed == source && !anyPositional)
+  if (shadowed == source)
   {
     if (this->SelfShadowing && !this->WarnedNoSelfShadowing)
     {
