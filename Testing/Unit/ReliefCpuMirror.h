@@ -63,18 +63,60 @@ struct DepthField
   }
 };
 
-/// The field the shader code reads; set it before calling a search.
+/// A least-depth pyramid as the GPU holds it: level L of max(1, size >> L) nodes per
+/// axis (vtkMaximumMipmapFilter's levels, unpacked from its atlas).
+struct DepthPyramid
+{
+  std::vector<int> Widths;
+  std::vector<int> Heights;
+  std::vector<std::vector<float>> Levels;
+
+  int Top() const { return static_cast<int>(this->Levels.size()) - 1; }
+  float At(vec2 node, int level) const
+  {
+    return this->Levels[level][static_cast<size_t>(node.y) * this->Widths[level] +
+      static_cast<size_t>(node.x)];
+  }
+  vec2 Size(int level) const { return vec2(this->Widths[level], this->Heights[level]); }
+};
+
+/// The field and pyramid the shader code reads; set them before calling a search.
 inline const DepthField* CurrentField = nullptr;
+inline const DepthPyramid* CurrentPyramid = nullptr;
 
 inline float SampleCurrentField(vec2 uv)
 {
   return CurrentField->Sample(uv);
 }
 
+inline vec4 CellDepths(vec2 cell)
+{
+  const int i = static_cast<int>(cell.x);
+  const int j = static_cast<int>(cell.y);
+  return vec4(CurrentField->At(i, j), CurrentField->At(i + 1, j), CurrentField->At(i, j + 1),
+    CurrentField->At(i + 1, j + 1));
+}
+
 #define RELIEF_DEPTH(uv) ReliefCpuMirror::SampleCurrentField(uv)
+#define RELIEF_DEPTH_SIZE vec2(CurrentField->Width, CurrentField->Height)
+#define RELIEF_CELL_DEPTHS(cell) ReliefCpuMirror::CellDepths(cell)
+#define RELIEF_PYRAMID_DEPTH(node, level) CurrentPyramid->At(node, level)
+#define RELIEF_PYRAMID_SIZE(level) CurrentPyramid->Size(level)
+#define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
+// shader functions are not inline: one copy per test source
+namespace
+{
 #include "vtkReliefCommon.glsl"
 #include "vtkReliefSearch.glsl"
+#include "vtkReliefGridSearch.glsl"
+#include "vtkReliefSearchMethod.glsl"
+}
 #undef RELIEF_DEPTH
+#undef RELIEF_DEPTH_SIZE
+#undef RELIEF_CELL_DEPTHS
+#undef RELIEF_PYRAMID_DEPTH
+#undef RELIEF_PYRAMID_SIZE
+#undef RELIEF_PYRAMID_TOP
 }
 
 #endif

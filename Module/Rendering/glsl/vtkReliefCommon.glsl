@@ -3,7 +3,10 @@
 // Written in the subset of GLSL that GLM also compiles: the unit tests include this
 // very file as C++, so the CPU mirror cannot drift from the shader. Rules: float
 // literals carry an f suffix, no swizzles, no inout, structs returned by value.
-// Height reads go through RELIEF_DEPTH(uv), defined by the includer.
+// Height reads go through macros the includer defines: RELIEF_DEPTH(uv), the filtered
+// depth; RELIEF_DEPTH_SIZE, texels per tile (vec2); RELIEF_CELL_DEPTHS(cell), the four
+// stored depths at the corners of a cell (vec4: (i, j), (i+1, j), (i, j+1), (i+1, j+1)),
+// cell indices unwrapped (the includer repeats them).
 //
 // Relief texture space: (u, v, depth); u, v per tile (repeating), depth in [0, 1],
 // 0 at the polygon, 1 deepest. A ray is a segment in that space, t in [0, 1].
@@ -66,4 +69,29 @@ ReliefRay reliefLightRay(vec3 hitPosition, vec3 lightDirection)
   ray.origin = vec3(hitPosition.x + lightDirection.x * run, hitPosition.y + lightDirection.y * run, 0.0f);
   ray.direction = hitPosition - ray.origin;
   return ray;
+}
+
+// A ray in texel coordinates, where texel (i, j)'s centre lies at (i, j): the cell
+// floor(x) is the bilinear patch between four texel centres (seed 002 s3.1).
+struct ReliefGridRay
+{
+  vec2 origin;    // texel coordinates at t = 0
+  vec2 direction; // change of texel coordinates per unit t
+  float depth;    // depth at t = 0
+  float descent;  // change of depth per unit t, > 0
+};
+
+ReliefGridRay reliefGridRay(ReliefRay ray, vec2 size)
+{
+  ReliefGridRay grid;
+  grid.origin = vec2(ray.origin.x * size.x - 0.5f, ray.origin.y * size.y - 0.5f);
+  grid.direction = vec2(ray.direction.x * size.x, ray.direction.y * size.y);
+  grid.depth = ray.origin.z;
+  grid.descent = ray.direction.z;
+  return grid;
+}
+
+vec2 reliefGridAt(ReliefGridRay grid, float t)
+{
+  return vec2(grid.origin.x + t * grid.direction.x, grid.origin.y + t * grid.direction.y);
 }

@@ -1,0 +1,66 @@
+/**
+ * @class   vtkMaximumMipmapFilter
+ * @brief   the maximum mipmap (least-depth pyramid) of a relief height field
+ *
+ * Builds the pyramid that vtkOpenGLReliefMapper's MaximumMipmap search traverses
+ * (Tevs, Ihrke and Seidel, "Maximum mipmaps for fast, accurate, and scalable dynamic
+ * height field rendering", I3D 2008). The height field is the bilinear interpolation of
+ * the texel centres, so its pieces are the cells between four centres; cell (i, j) lies
+ * between texels i, i + 1 and j, j + 1, repeating at the edges as the texture does. A
+ * bilinear patch is highest at a corner, so level 0 holds, per cell, the least of its
+ * four corner depths: exactly the highest point of the patch, in the relief convention
+ * where depth 0 is the top (hence a maximum mipmap of heights).
+ *
+ * Level L has OpenGL's mipmap size, max(1, n >> L) for n texels, so non-power-of-two
+ * maps need no padding: node i of level L covers cells [i 2^L, (i + 1) 2^L), except
+ * the last node of a row, which covers every cell to the edge (up to 2^(L+1) - 1).
+ * Its value is the least over those cells.
+ *
+ * Input: vtkReliefTextureFilter's output (depth in the last of four components) or a
+ * one-component depth image. Output: one VTK_FLOAT image, scalars "MinimumDepth",
+ * holding every level in an atlas: level 0 (the input's size) at the left, levels 1 and
+ * up stacked from the bottom in one column to its right. GetLevelPlacement() says where
+ * each level lies.
+ */
+#ifndef vtkMaximumMipmapFilter_h
+#define vtkMaximumMipmapFilter_h
+
+#include "vtkImageAlgorithm.h"
+#include "vtkReliefFiltersModule.h" // For export macro
+
+class VTKRELIEFFILTERS_EXPORT vtkMaximumMipmapFilter : public vtkImageAlgorithm
+{
+public:
+  static vtkMaximumMipmapFilter* New();
+  vtkTypeMacro(vtkMaximumMipmapFilter, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Number of levels above level 0 for a width x height map: floor(log2(max)).
+  static int GetTopLevel(int width, int height);
+
+  /**
+   * Where level `level` of the pyramid of a width x height map lies in the atlas: its
+   * lower-left texel (origin) and size. False for a level that does not exist.
+   */
+  static bool GetLevelPlacement(int width, int height, int level, int origin[2], int size[2]);
+
+  /// Size of the atlas holding the whole pyramid of a width x height map.
+  static void GetAtlasSize(int width, int height, int size[2]);
+
+protected:
+  vtkMaximumMipmapFilter();
+  ~vtkMaximumMipmapFilter() override = default;
+
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+private:
+  vtkMaximumMipmapFilter(const vtkMaximumMipmapFilter&) = delete;
+  void operator=(const vtkMaximumMipmapFilter&) = delete;
+};
+
+#endif

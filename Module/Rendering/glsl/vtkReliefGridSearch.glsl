@@ -1,0 +1,232 @@
+// vtkRelief: the exact searches. They walk the ray over the cells of the bilinear height
+// field (the patches between texel centres, seed 002 s3.1) and intersect it with a
+// cell's patch by solving a quadratic, so no feature is missed, however thin.
+// ExactDDA visits every cell the ray crosses (seed 002 s3.3, Amanatides and Woo);
+// MaximumMipmap skips whole blocks of cells the ray passes over (Tevs, Ihrke and
+// Seidel 2008). Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules.
+// MaximumMipmap also needs RELIEF_PYRAMID_DEPTH(node, level): the least depth (highest
+// point) of a pyramid node, RELIEF_PYRAMID_SIZE(level) (vec2) and RELIEF_PYRAMID_TOP.
+
+// Upper bound on loop iterations, so a shader always terminates.
+#define RELIEF_MAX_ITERATIONS 65536
+
+// The first parameter in [tIn, tOut] at which the ray is on or below the bilinear patch
+// over cell (depths at its corners, see RELIEF_CELL_DEPTHS), or -1 when it stays above.
+float reliefCellIntersection(ReliefGridRay grid, vec2 cell, vec4 depths, float tIn, float tOut)
+{
+  // the patch: depth(x, y) = a + b x + c y + e x y, x and y in [0, 1] across the cell
+  float a = depths.x;
+  float b = depths.y - depths.x;
+  float c = depths.z - depths.x;
+  float e = depths.w - depths.y - depths.z + depths.x;
+  // the ray from tIn: (px + s qx, py + s qy) at depth z0 + s dz, s in [0, tOut - tIn]
+  vec2 entry = reliefGridAt(grid, tIn);
+  float px = entry.x - cell.x;
+  float py = entry.y - cell.y;
+  float qx = grid.direction.x;
+  float qy = grid.direction.y;
+  float z0 = grid.depth + tIn * grid.descent;
+  // gap(s) = patch - ray depth = c0 + c1 s + c2 s^2; the first s where gap <= 0
+  float c0 = a + b * px + c * py + e * px * py - z0;
+  float c1 = b * qx + c * qy + e * (px * qy + py * qx) - grid.descent;
+  float c2 = e * qx * qy;
+  float span = tOut - tIn;
+  if (c0 <= 0.0f)
+  {
+    return tIn;
+  }
+  float first = -1.0f;
+  float discriminant = c1 * c1 - 4.0f * c2 * c0;
+  if (discriminant >= 0.0f)
+  {
+    // the two roots without cancellation: q / c2 and c0 / q
+    float root = sqrt(discriminant);
+    float q = -0.5f * (c1 >= 0.0f ? c1 + root : c1 - root);
+    float r1 = c2 != 0.0f ? q / c2 : -1.0f;
+    float r2 = q != 0.0f ? c0 / q : -1.0f;
+    float low = min(r1, r2);
+    float high = max(r1, r2);
+    first = low >= 0.0f ? low : high;
+  }
+  if (first >= 0.0f && first <= span)
+  {
+    return tIn + first;
+  }
+  // rounding can hide a root that the end of the cell still shows
+  float endGap = c0 + span * (c1 + span * c2);
+  return endGap <= 0.0f ? tOut : -1.0f;
+}
+
+// A parameter just before the first intersection t, hence above the field: the point the
+// self-shadow ray aims at (at most 1e-3 in depth and 1/20 of a cell back).
+float reliefClearBefore(ReliefGridRay grid, float t)
+{
+  float run = max(abs(grid.direction.x), abs(grid.direction.y));
+  return max(0.0f, t - min(1e-3f / grid.descent, 0.05f / max(run, 1e-30f)));
+}
+
+ReliefHit reliefGridHit(ReliefRay ray, ReliefGridRay grid, float t, bool found, int samples)
+{
+  return reliefHitAt(ray, t, found ? reliefClearBefore(grid, t) : t, found, samples);
+}
+
+vec2 reliefStepSigns(ReliefGridRay grid)
+{
+  return vec2(grid.direction.x >= 0.0f ? 1.0f : -1.0f, grid.direction.y >= 0.0f ? 1.0f : -1.0f);
+}
+
+// Parameters per unit of texel coordinate along x and y (huge along an axis the ray
+// does not move on).
+vec2 reliefInverseRun(ReliefGridRay grid)
+{
+  return vec2(1.0f / max(abs(grid.direction.x), 1e-30f), 1.0f / max(abs(grid.direction.y), 1e-30f));
+}
+
+// Parameters where the ray crosses x = bounds.x and y = bounds.y.
+vec2 reliefCrossings(ReliefGridRay grid, vec2 bounds, vec2 signs, vec2 inverseRun)
+{
+  return vec2((bounds.x - grid.origin.x) * signs.x * inverseRun.x,
+    (bounds.y - grid.origin.y) * signs.y * inverseRun.y);
+}
+
+// Every cell the ray's projection crosses between tStart and tEnd, in order, each
+// intersected exactly (seed 002 s3.3 with the patch solved, not sampled): the first hit,
+// or a miss at tEnd. `samples` counts on from the caller's.
+ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float tEnd, int samples)
+{
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  vec2 cell = floor(reliefGridAt(grid, tStart));
+  vec2 nextBounds = vec2(cell.x + max(signs.x, 0.0f), cell.y + max(signs.y, 0.0f));
+  vec2 next = reliefCrossings(grid, nextBounds, signs, inverseRun);
+  float tIn = tStart;
+  for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
+  {
+    float tOut = max(min(min(next.x, next.y), tEnd), tIn);
+    samples += 1;
+    float t = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), tIn, tOut);
+    if (t >= 0.0f)
+    {
+      return reliefGridHit(ray, grid, t, true, samples);
+    }
+    if (tOut >= tEnd)
+    {
+      break;
+    }
+    if (next.x < next.y)
+    {
+      cell.x += signs.x;
+      next.x += inverseRun.x;
+    }
+    else
+    {
+      cell.y += signs.y;
+      next.y += inverseRun.y;
+    }
+    tIn = tOut;
+  }
+  return reliefGridHit(ray, grid, tEnd, false, samples);
+}
+
+// ExactDDA: the whole ray, cell by cell.
+ReliefHit reliefSearchExactDDA(ReliefRay ray)
+{
+  return reliefWalkCells(ray, reliefGridRay(ray, RELIEF_DEPTH_SIZE), 0.0f, 1.0f, 0);
+}
+
+// MaximumMipmap: a quadtree of the cells, each node holding the least depth of the
+// cells below it (vtkMaximumMipmapFilter). A node the ray passes over without reaching
+// that depth is skipped whole; otherwise the ray descends into it, down to single cells,
+// which are intersected exactly. Level L has GL's mipmap size max(1, size >> L); node i
+// covers cells [i 2^L, (i + 1) 2^L), the last node of a row everything to the tile's
+// edge, so sizes need not be powers of two.
+vec2 reliefPyramidParent(vec2 node, int level)
+{
+  vec2 parentSize = RELIEF_PYRAMID_SIZE(level + 1);
+  return min(floor(0.5f * node), vec2(parentSize.x - 1.0f, parentSize.y - 1.0f));
+}
+
+ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
+{
+  vec2 size = RELIEF_DEPTH_SIZE;
+  ReliefGridRay grid = reliefGridRay(ray, size);
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  int level = RELIEF_PYRAMID_TOP;
+  vec2 tile = floor(vec2(grid.origin.x / size.x, grid.origin.y / size.y));
+  vec2 node = vec2(0.0f, 0.0f);
+  float t = 0.0f;
+  int samples = 0;
+  for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
+  {
+    // the node's cells, as texel coordinates
+    float span = exp2(float(level));
+    vec2 levelSize = RELIEF_PYRAMID_SIZE(level);
+    vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
+    vec2 low = origin + node * span;
+    vec2 high = vec2(node.x >= levelSize.x - 1.0f ? origin.x + size.x : low.x + span,
+      node.y >= levelSize.y - 1.0f ? origin.y + size.y : low.y + span);
+    vec2 exits = reliefCrossings(
+      grid, vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
+    float tOut = min(exits.x, exits.y);
+    samples += 1;
+    float tReach = (RELIEF_PYRAMID_DEPTH(node, level) - grid.depth) / grid.descent;
+    if (tReach <= min(tOut, 1.0f))
+    {
+      if (level == 0)
+      {
+        samples += 1;
+        float tHit = reliefCellIntersection(
+          grid, low, RELIEF_CELL_DEPTHS(low), max(t, tReach), max(min(tOut, 1.0f), t));
+        if (tHit >= 0.0f)
+        {
+          return reliefGridHit(ray, grid, tHit, true, samples);
+        }
+      }
+      else
+      {
+        // down into the child under the ray where it reaches the node's top
+        t = max(t, tReach);
+        vec2 at = reliefGridAt(grid, t);
+        level -= 1;
+        float childSpan = 0.5f * span;
+        vec2 childSize = RELIEF_PYRAMID_SIZE(level);
+        vec2 lastChild = vec2(node.x >= levelSize.x - 1.0f ? childSize.x - 1.0f : 2.0f * node.x + 1.0f,
+          node.y >= levelSize.y - 1.0f ? childSize.y - 1.0f : 2.0f * node.y + 1.0f);
+        node = clamp(floor((at - origin) / childSpan), 2.0f * node, lastChild);
+        continue;
+      }
+    }
+    // past the node: on to its neighbour across the side the ray leaves by, and up a
+    // level when that neighbour has another parent
+    t = max(t, tOut);
+    if (t >= 1.0f)
+    {
+      break;
+    }
+    vec2 parent = level < RELIEF_PYRAMID_TOP ? reliefPyramidParent(node, level) : node;
+    vec2 oldTile = tile;
+    if (exits.x < exits.y)
+    {
+      node.x += signs.x;
+      tile.x += node.x < 0.0f ? -1.0f : (node.x >= levelSize.x ? 1.0f : 0.0f);
+      node.x = node.x < 0.0f ? levelSize.x - 1.0f : (node.x >= levelSize.x ? 0.0f : node.x);
+    }
+    else
+    {
+      node.y += signs.y;
+      tile.y += node.y < 0.0f ? -1.0f : (node.y >= levelSize.y ? 1.0f : 0.0f);
+      node.y = node.y < 0.0f ? levelSize.y - 1.0f : (node.y >= levelSize.y ? 0.0f : node.y);
+    }
+    if (level < RELIEF_PYRAMID_TOP)
+    {
+      vec2 newParent = reliefPyramidParent(node, level);
+      if (newParent != parent || tile != oldTile)
+      {
+        node = newParent;
+        level += 1;
+      }
+    }
+  }
+  return reliefGridHit(ray, grid, 1.0f, false, samples);
+}

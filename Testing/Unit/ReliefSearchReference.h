@@ -1,0 +1,333 @@
+// Brute-force ground truth for the searches of the CPU mirror, and the height fields
+// and rays they are proven on: shared by the search tests of every method.
+#ifndef ReliefSearchReference_h
+#define ReliefSearchReference_h
+
+#include "ReliefCpuMirror.h"
+#include "vtkMaximumMipmapFilter.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkOpenImageIOReader.h"
+#include "vtkPointData.h"
+#include "vtkReliefTextureFilter.h"
+#include "vtkSmartPointer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+// one copy per test source, like the mirror's shader code it uses
+namespace
+{
+using namespace ReliefCpuMirror;
+
+constexpr int RayCount = 10000;
+constexpr double Pi = 3.14159265358979323846;
+constexpr double Tolerance = 1e-3; // texels and depth
+
+// The first parameter where the ray meets the bilinear field, or 1 when it does not:
+// every cell the ray crosses, found by listing all its centreline crossings, intersected
+// analytically in double precision.
+double ReferenceHit(const DepthField& field, const ReliefRay& ray)
+{
+  const double ox = double(ray.origin.x) * field.Width - 0.5;
+  const double oy = double(ray.origin.y) * field.Height - 0.5;
+  const double qx = double(ray.direction.x) * field.Width;
+  const double qy = double(ray.direction.y) * field.Height;
+  const double z0 = ray.origin.z;
+  const double dz = ray.direction.z;
+  std::vector<double> breaks = { 0.0, 1.0 };
+  auto addCrossings = [&breaks](double origin, double run) {
+    if (run == 0.0)
+    {
+      return;
+    }
+    const double end = origin + run;
+    for (double line = std::ceil(std::min(origin, end)); line <= std::max(origin, end); line += 1.0)
+    {
+      const double t = (line - origin) / run;
+      if (t > 0.0 && t < 1.0)
+      {
+        breaks.push_back(t);
+      }
+    }
+  };
+  addCrossings(ox, qx);
+  addCrossings(oy, qy);
+  std::sort(breaks.begin(), breaks.end());
+  for (size_t k = 0; k + 1 < breaks.size(); ++k)
+  {
+    const double ta = breaks[k];
+    const double tb = breaks[k + 1];
+    if (tb <= ta)
+    {
+      continue;
+    }
+    const double middle = 0.5 * (ta + tb);
+    const int ci = static_cast<int>(std::floor(ox + middle * qx));
+    const int cj = static_cast<int>(std::floor(oy + middle * qy));
+    const double d00 = field.At(ci, cj);
+    const double d10 = field.At(ci + 1, cj);
+    const double d01 = field.At(ci, cj + 1);
+    const double d11 = field.At(ci + 1, cj + 1);
+    auto gap = [&](double t) {
+      const double x = ox + t * qx - ci;
+      const double y = oy + t * qy - cj;
+      return d00 * (1 - x) * (1 - y) + d10 * x * (1 - y) + d01 * (1 - x) * y + d11 * x * y -
+        (z0 + t * dz);
+    };
+    if (gap(ta) <= 0.0)
+    {
+      return ta;
+    }
+    // gap(t) = c0 + c1 t + c2 t^2 exactly; find its coefficients from three values
+    const double g0 = gap(ta);
+    const double g1 = gap(middle);
+    const double g2 = gap(tb);
+    const double h = middle - ta;
+    const double c2 = (g2 - 2.0 * g1 + g0) / (2.0 * h * h);
+    const double c1 = (g1 - g0) / h - c2 * h; // derivative at ta
+    std::vector<double> roots;
+    if (std::abs(c2) < 1e-300)
+    {
+      if (c1 < 0.0)
+      {
+        roots.push_back(-g0 / c1);
+      }
+    }
+    else
+    {
+      const double discriminant = c1 * c1 - 4.0 * c2 * g0;
+      if (discriminant >= 0.0)
+      {
+        const double root = std::sqrt(discriminant);
+        const double q = -0.5 * (c1 + (c1 >= 0.0 ? root : -root));
+        roots.push_back(q / c2);
+        if (q != 0.0)
+        {
+          roots.push_back(g0 / q);
+        }
+      }
+    }
+    std::sort(roots.begin(), roots.end());
+    for (double root : roots)
+    {
+      if (root >= 0.0 && root <= tb - ta)
+      {
+        return ta + root;
+      }
+    }
+    if (g2 <= 0.0)
+    {
+      return tb;
+    }
+  }
+  return 1.0;
+}
+
+// A depth field as the pipeline gives it to the mapper, and its pyramid from
+// vtkMaximumMipmapFilter.
+struct Scene
+{
+  std::string Name;
+  DepthField Field;
+  DepthPyramid Pyramid;
+};
+
+vtkSmartPointer<vtkImageData> DepthImage(const DepthField& field)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(field.Width, field.Height, 1);
+  vtkNew<vtkFloatArray> depths;
+  depths->SetNumberOfTuples(static_cast<vtkIdType>(field.Depths.size()));
+  std::copy(field.Depths.begin(), field.Depths.end(), depths->GetPointer(0));
+  image->GetPointData()->SetScalars(depths);
+  return image;
+}
+
+DepthPyramid PyramidOf(const DepthField& field)
+{
+  vtkNew<vtkMaximumMipmapFilter> filter;
+  filter->SetInputData(DepthImage(field));
+  filter->Update();
+  vtkImageData* atlas = filter->GetOutput();
+  const int atlasWidth = atlas->GetDimensions()[0];
+  const float* values =
+    vtkFloatArray::SafeDownCast(atlas->GetPointData()->GetScalars())->GetPointer(0);
+  DepthPyramid pyramid;
+  int origin[2];
+  int size[2];
+  for (int level = 0;
+       vtkMaximumMipmapFilter::GetLevelPlacement(field.Width, field.Height, level, origin, size);
+       ++level)
+  {
+    pyramid.Widths.push_back(size[0]);
+    pyramid.Heights.push_back(size[1]);
+    std::vector<float> nodes;
+    for (int j = 0; j < size[1]; ++j)
+    {
+      for (int i = 0; i < size[0]; ++i)
+      {
+        nodes.push_back(values[static_cast<size_t>(origin[1] + j) * atlasWidth + origin[0] + i]);
+      }
+    }
+    pyramid.Levels.push_back(nodes);
+  }
+  return pyramid;
+}
+
+Scene MakeScene(const std::string& name, const DepthField& field)
+{
+  return Scene{ name, field, PyramidOf(field) };
+}
+
+DepthField RandomField(int width, int height, unsigned seed, float low, float high)
+{
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<float> depth(low, high);
+  DepthField field;
+  field.Width = width;
+  field.Height = height;
+  for (int k = 0; k < width * height; ++k)
+  {
+    field.Depths.push_back(depth(generator));
+  }
+  return field;
+}
+
+DepthField StonesTerrain()
+{
+  const char* data = std::getenv("RELIEF_DATA_DIR");
+  vtkNew<vtkOpenImageIOReader> reader;
+  reader->SetFileName((std::string(data ? data : "Data") + "/stones_height.png").c_str());
+  vtkNew<vtkReliefTextureFilter> relief;
+  relief->SetInputConnection(reader->GetOutputPort());
+  relief->Update();
+  vtkImageData* texture = relief->GetOutput();
+  DepthField field;
+  field.Width = texture->GetDimensions()[0];
+  field.Height = texture->GetDimensions()[1];
+  vtkDataArray* texels = texture->GetPointData()->GetScalars();
+  for (vtkIdType k = 0; k < texels->GetNumberOfTuples(); ++k)
+  {
+    field.Depths.push_back(static_cast<float>(texels->GetComponent(k, 3)));
+  }
+  return field;
+}
+
+std::vector<Scene> Scenes()
+{
+  std::vector<Scene> scenes;
+  scenes.push_back(MakeScene("smooth", DepthField::FromFunction(128, 128, [](float u, float v) {
+    return 0.5f + 0.2f * std::sin(2.0f * float(Pi) * u) * std::cos(4.0f * float(Pi) * v);
+  })));
+  scenes.push_back(MakeScene("noisy", RandomField(64, 64, 11, 0.0f, 1.0f)));
+  DepthField spikes = RandomField(128, 128, 12, 0.85f, 0.95f);
+  std::mt19937 generator(13);
+  std::uniform_int_distribution<int> texel(0, 128 * 128 - 1);
+  for (int k = 0; k < 400; ++k)
+  {
+    spikes.Depths[static_cast<size_t>(texel(generator))] = 0.0f; // one texel wide, full height
+  }
+  scenes.push_back(MakeScene("spikes", spikes));
+  scenes.push_back(MakeScene("cliffs", DepthField::FromFunction(128, 128, [](float u, float v) {
+    return (std::fmod(4.0f * u, 1.0f) < 0.5f) != (std::fmod(3.0f * v, 1.0f) < 0.3f) ? 0.1f : 0.9f;
+  })));
+  DepthField checker;
+  checker.Width = 32;
+  checker.Height = 32;
+  for (int j = 0; j < 32; ++j)
+  {
+    for (int i = 0; i < 32; ++i)
+    {
+      checker.Depths.push_back((i + j) % 2 ? 0.2f : 0.8f); // saddles in every cell
+    }
+  }
+  scenes.push_back(MakeScene("checkerboard", checker));
+  scenes.push_back(MakeScene("16-bit terrain", StonesTerrain()));
+  scenes.push_back(MakeScene("non-power-of-two", RandomField(100, 37, 14, 0.3f, 1.0f)));
+  return scenes;
+}
+
+// Rays from straight down to 89 degrees off the normal on a relief whose depth 1 spans
+// `depthInTiles` of a tile, entering anywhere in the tile, in every azimuth.
+std::vector<ReliefRay> ViewRays(unsigned seed, float depthInTiles)
+{
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<float> entry(0.0f, 1.0f);
+  std::uniform_real_distribution<double> tilt(0.0, 89.0 * Pi / 180.0);
+  std::uniform_real_distribution<double> azimuth(0.0, 2.0 * Pi);
+  std::vector<ReliefRay> rays;
+  for (int i = 0; i < RayCount; ++i)
+  {
+    const double run = std::tan(tilt(generator)) * depthInTiles;
+    const double angle = azimuth(generator);
+    rays.push_back(reliefViewRay(vec2(entry(generator), entry(generator)),
+      vec3(float(run * std::cos(angle)), float(run * std::sin(angle)), 1.0f)));
+  }
+  return rays;
+}
+
+// How far a hit lies from the reference: the larger of its texel and depth offsets.
+double HitError(const DepthField& field, const ReliefRay& ray, double t, double reference)
+{
+  const double dt = std::abs(t - reference);
+  const double texels = dt *
+    std::max(std::abs(double(ray.direction.x) * field.Width),
+      std::abs(double(ray.direction.y) * field.Height));
+  return std::max(texels, dt * std::abs(double(ray.direction.z)));
+}
+
+// Every scene, 10^4 rays each: the search's hit must be the reference's within
+// `tolerance` (texels and depth). `prepare` sets whatever else the search reads.
+template <typename Search>
+void ExpectExact(const std::vector<Scene>& scenes, const char* method, Search search,
+  double tolerance = Tolerance,
+  const std::function<void(const Scene&)>& prepare = [](const Scene&) {})
+{
+  unsigned seed = 100;
+  for (const Scene& scene : scenes)
+  {
+    CurrentField = &scene.Field;
+    CurrentPyramid = &scene.Pyramid;
+    prepare(scene);
+    int wrong = 0;
+    double worst = 0.0;
+    long samples = 0;
+    for (const ReliefRay& ray : ViewRays(seed++, 0.1f))
+    {
+      const double reference = ReferenceHit(scene.Field, ray);
+      const ReliefHit hit = search(ray);
+      const double error = HitError(scene.Field, ray, hit.t, reference);
+      worst = std::max(worst, error);
+      samples += hit.samples;
+      if (!(error <= tolerance) || !hit.hit)
+      {
+        if (++wrong <= 3)
+        {
+          ADD_FAILURE() << method << " on " << scene.Name << ": t " << hit.t << " against "
+                        << reference << " (error " << error << ") for the ray from ("
+                        << ray.origin.x << ", " << ray.origin.y << ") along ("
+                        << ray.direction.x << ", " << ray.direction.y << ", "
+                        << ray.direction.z << ")";
+        }
+      }
+    }
+    std::cout << method << " on " << scene.Name << ": " << wrong << " of " << RayCount
+              << " rays off by more than " << tolerance << ", worst " << worst << ", "
+              << double(samples) / RayCount << " samples per ray\n";
+    EXPECT_EQ(wrong, 0) << method << " on " << scene.Name;
+  }
+}
+}
+
+#endif

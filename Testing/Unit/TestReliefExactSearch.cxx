@@ -1,0 +1,172 @@
+// The exact searches of vtkReliefGridSearch.glsl (and the fixed-step ones for
+// comparison), run on the CPU through the very source the GPU compiles, against the
+// brute-force reference of ReliefSearchReference.h.
+#include "ReliefSearchReference.h"
+
+namespace
+{
+using namespace ReliefCpuMirror;
+
+class ReliefExactSearch : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite() { AllScenes = new std::vector<Scene>(Scenes()); }
+  static void TearDownTestSuite()
+  {
+    delete AllScenes;
+    AllScenes = nullptr;
+  }
+  static void Use(const Scene& scene)
+  {
+    CurrentField = &scene.Field;
+    CurrentPyramid = &scene.Pyramid;
+  }
+  static std::vector<Scene>* AllScenes;
+};
+std::vector<Scene>* ReliefExactSearch::AllScenes = nullptr;
+
+}
+
+TEST_F(ReliefExactSearch, ReferenceSolvesAPlaneAndASlope)
+{
+  DepthField slope = DepthField::FromFunction(16, 16, [](float u, float) { return 0.2f + 0.5f * u; });
+  const ReliefRay ray = reliefViewRay(vec2(0.25f, 0.5f), vec3(0.3f, 0.1f, 1.0f));
+  // t = 0.2 + 0.5 (0.25 + 0.3 t) away from the seam, where the bilinear field is the slope
+  EXPECT_NEAR(ReferenceHit(slope, ray), (0.2 + 0.5 * 0.25) / (1.0 - 0.5 * 0.3), 1e-6);
+  DepthField plane = DepthField::FromFunction(8, 8, [](float, float) { return 0.375f; });
+  EXPECT_NEAR(ReferenceHit(plane, ray), 0.375, 1e-7);
+}
+
+TEST_F(ReliefExactSearch, ReferenceCatchesTheSaddleThatRasterizationMisses)
+{
+  // Seed 002 Fig. 3: a ray crossing a saddle cell between two centrelines, above the
+  // field at both, dips below the patch in between.
+  DepthField saddle;
+  saddle.Width = 2;
+  saddle.Height = 2;
+  saddle.Depths = { 0.0f, 1.0f, 1.0f, 0.0f }; // (0,0)=0, (1,0)=1, (0,1)=1, (1,1)=0
+  // along the cell's anti-diagonal, from texel (0, 1) to (1, 0), the patch is 1 deep at
+  // both ends and 0.5 at the middle: a ray at depth 0.6 is above at the ends only
+  ReliefRay ray;
+  ray.origin = vec3((0.02f + 0.5f) / 2.0f, (0.98f + 0.5f) / 2.0f, 0.6f);
+  ray.direction = vec3(0.48f, -0.48f, 0.01f);
+  const double t = ReferenceHit(saddle, ray);
+  EXPECT_GT(t, 0.2);
+  EXPECT_LT(t, 0.5);
+  CurrentField = &saddle;
+  EXPECT_NEAR(reliefSearchExactDDA(ray).t, t, 1e-4);
+}
+
+TEST_F(ReliefExactSearch, ExactDDAMatchesTheReferenceEverywhere)
+{
+  ExpectExact(*AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray); });
+}
+
+TEST_F(ReliefExactSearch, MaximumMipmapMatchesTheReferenceEverywhere)
+{
+  ExpectExact(*AllScenes, "MaximumMipmap",
+    [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray); });
+}
+
+TEST_F(ReliefExactSearch, MaximumMipmapTakesFewerSamplesThanExactDDAAtGrazingAngles)
+{
+  Use((*AllScenes)[5]); // the terrain
+  long dda = 0;
+  long mipmap = 0;
+  std::mt19937 generator(21);
+  std::uniform_real_distribution<float> entry(0.0f, 1.0f);
+  for (int i = 0; i < 1000; ++i)
+  {
+    const ReliefRay ray =
+      reliefViewRay(vec2(entry(generator), entry(generator)), vec3(2.0f, 0.7f, 1.0f));
+    dda += reliefSearchExactDDA(ray).samples;
+    mipmap += reliefSearchMaximumMipmap(ray).samples;
+  }
+  EXPECT_LT(mipmap, dda / 2) << "DDA " << dda << ", maximum mipmap " << mipmap;
+}
+
+TEST_F(ReliefExactSearch, FixedStepMethodsMissRatesAreMeasured)
+{
+  // Not exact by design: the share of rays whose hit is off by more than a texel is
+  // printed for the record; the test only checks that every search reports a hit.
+  unsigned seed = 200;
+  for (const Scene& scene : *AllScenes)
+  {
+    Use(scene);
+    int missed[3] = { 0, 0, 0 };
+    for (const ReliefRay& ray : ViewRays(seed++, 0.1f))
+    {
+      const double reference = ReferenceHit(scene.Field, ray);
+      const ReliefHit hits[3] = { reliefSearchLinear(ray, 10), reliefSearchLinearBinary(ray, 10, 5),
+        reliefSearchSecant(ray, 10, 5) };
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_TRUE(std::isfinite(hits[k].t));
+        missed[k] += HitError(scene.Field, ray, hits[k].t, reference) > 1.0 ? 1 : 0;
+      }
+    }
+    std::cout << scene.Name << ": rays off by more than a texel: Linear(10) "
+              << 100.0 * missed[0] / RayCount << "%, LinearBinary(10+5) "
+              << 100.0 * missed[1] / RayCount << "%, Secant(10+5) "
+              << 100.0 * missed[2] / RayCount << "%\n";
+  }
+}
+
+TEST_F(ReliefExactSearch, SecantRecoversALinearSlopeInOneStep)
+{
+  // a slope is linear along the ray inside one cell row, so the secant is exact there
+  DepthField slope = DepthField::FromFunction(256, 4, [](float u, float) { return 0.1f + 0.8f * u; });
+  CurrentField = &slope;
+  const ReliefRay ray = reliefViewRay(vec2(0.3f, 0.5f), vec3(0.05f, 0.0f, 1.0f));
+  const float expected = (0.1f + 0.8f * 0.3f) / (1.0f - 0.8f * 0.05f);
+  EXPECT_NEAR(reliefSearchSecant(ray, 10, 0).t, expected, 1e-5);
+  EXPECT_GT(std::abs(reliefSearchLinearBinary(ray, 10, 0).t - expected), 1e-3);
+}
+
+TEST(ReliefMaximumMipmap, LevelsFollowOpenGLMipmapSizes)
+{
+  int origin[2];
+  int size[2];
+  EXPECT_EQ(vtkMaximumMipmapFilter::GetTopLevel(100, 37), 6);
+  ASSERT_TRUE(vtkMaximumMipmapFilter::GetLevelPlacement(100, 37, 1, origin, size));
+  EXPECT_EQ(size[0], 50);
+  EXPECT_EQ(size[1], 18);
+  EXPECT_EQ(origin[0], 100);
+  ASSERT_TRUE(vtkMaximumMipmapFilter::GetLevelPlacement(100, 37, 6, origin, size));
+  EXPECT_EQ(size[0], 1);
+  EXPECT_EQ(size[1], 1);
+  EXPECT_FALSE(vtkMaximumMipmapFilter::GetLevelPlacement(100, 37, 7, origin, size));
+  int atlas[2];
+  vtkMaximumMipmapFilter::GetAtlasSize(8, 1, atlas);
+  EXPECT_EQ(atlas[0], 12);
+  EXPECT_EQ(atlas[1], 3);
+}
+
+TEST(ReliefMaximumMipmap, EveryNodeHoldsTheHighestPointOfItsCells)
+{
+  const DepthField field = RandomField(23, 10, 31, 0.0f, 1.0f);
+  const DepthPyramid pyramid = PyramidOf(field);
+  for (int level = 0; level <= pyramid.Top(); ++level)
+  {
+    const int span = 1 << level;
+    for (int j = 0; j < pyramid.Heights[level]; ++j)
+    {
+      for (int i = 0; i < pyramid.Widths[level]; ++i)
+      {
+        const int lastI = i == pyramid.Widths[level] - 1 ? field.Width : (i + 1) * span;
+        const int lastJ = j == pyramid.Heights[level] - 1 ? field.Height : (j + 1) * span;
+        float least = 1.0f;
+        for (int y = j * span; y < lastJ; ++y)
+        {
+          for (int x = i * span; x < lastI; ++x)
+          {
+            least = std::min({ least, field.At(x, y), field.At(x + 1, y), field.At(x, y + 1),
+              field.At(x + 1, y + 1) });
+          }
+        }
+        ASSERT_EQ(pyramid.At(vec2(i, j), level), least) << "level " << level << " node " << i
+                                                        << ", " << j;
+      }
+    }
+  }
+}
