@@ -33,6 +33,7 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
+#include <cctype>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -78,6 +79,32 @@ struct Options
 // enough to be seen on any mesh, shallow enough for a coarse mesh to carry it.
 constexpr double DefaultDepthFraction = 0.02;
 
+// The search method whose name (as GetSearchMethodAsString gives it) matches `name`,
+// ignoring case and dashes: "exact-dda" is ExactDDA; -1 for none.
+int SearchMethodNamed(const std::string& name)
+{
+  auto squeeze = [](const std::string& text) {
+    std::string result;
+    for (char c : text)
+    {
+      if (c != '-')
+      {
+        result += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      }
+    }
+    return result;
+  };
+  for (int method = 0; method < 16; ++method)
+  {
+    const char* known = vtkOpenGLReliefMapper::GetSearchMethodAsString(method);
+    if (known && squeeze(known) == squeeze(name))
+    {
+      return method;
+    }
+  }
+  return -1;
+}
+
 void PrintUsage(std::ostream& os)
 {
   const Options defaults;
@@ -100,7 +127,7 @@ void PrintUsage(std::ostream& os)
         "                       generate texture coordinates for a mesh that has none\n"
         "                       (default: use the mesh's own)\n"
         "  --depth-convention   read the height map as white = deep\n"
-        "  --search linear|linear-binary\n"
+        "  --search linear|linear-binary|secant|exact-dda|maximum-mipmap\n"
         "                       ray search method (default: linear-binary)\n"
         "  --linear-steps N     linear search steps, 1 to 512 (default: "
      << defaults.LinearSteps
@@ -208,9 +235,8 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
       } },
     { "--search",
       [&options](const std::string& value) {
-        options.SearchMethod = value == "linear" ? vtkOpenGLReliefMapper::LINEAR
-                                                 : vtkOpenGLReliefMapper::LINEAR_BINARY;
-        return value == "linear" || value == "linear-binary";
+        options.SearchMethod = SearchMethodNamed(value);
+        return options.SearchMethod >= 0;
       } },
     { "--linear-steps", integerIn(options.LinearSteps, 1, 512) },
     { "--binary-steps", integerIn(options.BinarySteps, 0, 32) },

@@ -8,6 +8,7 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkImageAlgorithm.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -18,6 +19,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkMaximumMipmapFilter.h"
 #include "vtkProperty.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
@@ -31,12 +33,15 @@
 #include "vtkReliefFragmentImpl.h"
 #include "vtkReliefGeometryDec.h"
 #include "vtkReliefGeometryImpl.h"
+#include "vtkReliefGridSearch.h"
 #include "vtkReliefSearch.h"
+#include "vtkReliefSearchMethod.h"
 #include "vtkReliefVertexDec.h"
 #include "vtkReliefVertexImpl.h"
 
 #include <algorithm>
 #include <regex>
+#include <vector>
 
 vtkStandardNewMacro(vtkOpenGLReliefMapper);
 
@@ -74,6 +79,74 @@ bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wi
   return true;
 }
 
+// One level of an acceleration image: its texels, row by row.
+struct AccelerationLevel
+{
+  int Size[2];
+  std::vector<float> Values;
+};
+
+// The levels of `image` (one-level images, or the pyramid atlas of
+// vtkMaximumMipmapFilter for a width x height map when `pyramid` is set).
+std::vector<AccelerationLevel> AccelerationLevels(
+  vtkImageData* image, bool pyramid, int width, int height)
+{
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  const int components = values->GetNumberOfComponents();
+  const int rowLength = image->GetDimensions()[0];
+  std::vector<AccelerationLevel> levels;
+  int origin[2] = { 0, 0 };
+  int size[2] = { width, height };
+  for (int level = 0; pyramid
+         ? vtkMaximumMipmapFilter::GetLevelPlacement(width, height, level, origin, size)
+         : level == 0;
+       ++level)
+  {
+    AccelerationLevel copy{ { size[0], size[1] }, {} };
+    copy.Values.reserve(static_cast<size_t>(size[0]) * size[1] * components);
+    for (int j = 0; j < size[1]; ++j)
+    {
+      for (int i = 0; i < size[0]; ++i)
+      {
+        const vtkIdType texel = static_cast<vtkIdType>(origin[1] + j) * rowLength + origin[0] + i;
+        for (int c = 0; c < components; ++c)
+        {
+          copy.Values.push_back(static_cast<float>(values->GetComponent(texel, c)));
+        }
+      }
+    }
+    levels.push_back(std::move(copy));
+  }
+  return levels;
+}
+
+// A float texture the searches read with texelFetch only, every level given.
+bool UploadFetchedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
+  const std::vector<AccelerationLevel>& levels, int components)
+{
+  const unsigned int internalFormat = components == 1 ? GL_R32F : GL_RG32F;
+  texture->SetContext(window);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetMinificationFilter(
+    levels.size() > 1 ? vtkTextureObject::NearestMipmapNearest : vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetMaxLevel(static_cast<int>(levels.size()) - 1);
+  if (!texture->Create2DFromRaw(levels[0].Size[0], levels[0].Size[1], components, VTK_FLOAT,
+        const_cast<float*>(levels[0].Values.data())))
+  {
+    return false;
+  }
+  texture->Activate();
+  for (size_t level = 1; level < levels.size(); ++level)
+  {
+    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), internalFormat, levels[level].Size[0],
+      levels[level].Size[1], 0, components == 1 ? GL_RED : GL_RG, GL_FLOAT,
+      levels[level].Values.data());
+  }
+  texture->Deactivate();
+  return true;
+}
+
 // Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
 void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 {
@@ -89,7 +162,7 @@ void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 
 vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
 {
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   // The internal filters' errors and warnings are the mapper's: observers of the mapper
   // receive them, and without observers they are printed as usual.
   this->ForwardMessages->SetClientData(this);
@@ -121,7 +194,7 @@ vtkOpenGLReliefMapper::~vtkOpenGLReliefMapper() = default;
 
 int vtkOpenGLReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 1)
+  if (port == 1 || port == 2)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -133,34 +206,68 @@ int vtkOpenGLReliefMapper::FillInputPortInformation(int port, vtkInformation* in
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefMapper::SetSearchMethod(int method)
 {
-  if (method != LINEAR && method != LINEAR_BINARY)
+  if (!GetSearchMethodAsString(method))
   {
-    vtkErrorMacro("Unknown search method " << method << "; use SetSearchMethodToLinear() or "
-                                              "SetSearchMethodToLinearBinary().");
+    vtkErrorMacro("Unknown search method " << method
+                                           << "; use one of the SetSearchMethodTo...() methods.");
     return;
   }
   if (method != this->SearchMethod)
   {
     this->SearchMethod = method;
+    this->WarnedAccelerationFallback = false;
+    this->SetActiveSearchMethod(method);
+  }
+}
+
+void vtkOpenGLReliefMapper::SetActiveSearchMethod(int method)
+{
+  if (method != this->ActiveSearchMethod)
+  {
+    this->ActiveSearchMethod = method;
     this->ShaderOptionsTime.Modified();
+  }
+}
+
+const char* vtkOpenGLReliefMapper::GetSearchMethodAsString(int method)
+{
+  switch (method)
+  {
+    case LINEAR:
+      return "Linear";
+    case LINEAR_BINARY:
+      return "LinearBinary";
+    case SECANT:
+      return "Secant";
+    case EXACT_DDA:
+      return "ExactDDA";
+    case MAXIMUM_MIPMAP:
+      return "MaximumMipmap";
+    default:
+      return nullptr;
   }
 }
 
 const char* vtkOpenGLReliefMapper::GetSearchMethodAsString()
 {
-  switch (this->SearchMethod)
-  {
-    case LINEAR:
-      return "Linear";
-    default:
-      return "LinearBinary";
-  }
+  return GetSearchMethodAsString(this->SearchMethod);
 }
 
 std::string vtkOpenGLReliefMapper::GetSearchDefines()
 {
-  return this->SearchMethod == LINEAR ? "#define RELIEF_SEARCH_LINEAR\n"
-                                      : "#define RELIEF_SEARCH_LINEAR_BINARY\n";
+  switch (this->ActiveSearchMethod)
+  {
+    case LINEAR:
+      return "#define RELIEF_SEARCH_LINEAR\n";
+    case SECANT:
+      return "#define RELIEF_SEARCH_SECANT\n";
+    case EXACT_DDA:
+      return "#define RELIEF_SEARCH_EXACT_DDA\n";
+    case MAXIMUM_MIPMAP:
+      return "#define RELIEF_SEARCH_MAXIMUM_MIPMAP\n";
+    default:
+      return "#define RELIEF_SEARCH_LINEAR_BINARY\n";
+  }
 }
 
 void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
@@ -233,6 +340,25 @@ vtkImageData* vtkOpenGLReliefMapper::GetHeightMap()
     return nullptr;
   }
   return vtkImageData::SafeDownCast(this->GetInputDataObject(1, 0));
+}
+
+void vtkOpenGLReliefMapper::SetAccelerationConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(2, output);
+}
+
+void vtkOpenGLReliefMapper::SetAccelerationData(vtkImageData* image)
+{
+  this->SetInputDataInternal(2, image);
+}
+
+vtkImageData* vtkOpenGLReliefMapper::GetAcceleration()
+{
+  if (this->GetNumberOfInputConnections(2) == 0)
+  {
+    return nullptr;
+  }
+  return vtkImageData::SafeDownCast(this->GetInputDataObject(2, 0));
 }
 
 vtkReliefTextureFilter* vtkOpenGLReliefMapper::GetReliefTextureFilter()
@@ -326,6 +452,110 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   return true;
 }
 
+//------------------------------------------------------------------------------
+namespace
+{
+bool NeedsAcceleration(int method)
+{
+  return method == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP;
+}
+}
+
+void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
+{
+  if (!NeedsAcceleration(this->SearchMethod))
+  {
+    this->SetActiveSearchMethod(this->SearchMethod);
+    return;
+  }
+  if (this->GetNumberOfInputConnections(2) > 0)
+  {
+    this->GetInputAlgorithm(2, 0)->Update();
+  }
+  vtkImageData* acceleration =
+    this->GetAcceleration() ? this->GetAcceleration() : this->ComputeAcceleration();
+  const bool current = acceleration && acceleration == this->UploadedAcceleration &&
+    this->AccelerationMethod == this->SearchMethod &&
+    this->AccelerationUploadTime > acceleration->GetMTime() &&
+    this->AccelerationUploadTime > this->ReliefTextureUploadTime;
+  if (!current)
+  {
+    // checked and uploaded once per change: any message is given once
+    this->UploadedAcceleration = acceleration;
+    this->AccelerationMethod = this->SearchMethod;
+    this->AccelerationUploadTime.Modified();
+    this->AccelerationUsable = acceleration && this->CheckAcceleration(acceleration) &&
+      this->UploadAcceleration(ren, acceleration);
+  }
+  if (this->AccelerationUsable)
+  {
+    this->SetActiveSearchMethod(this->SearchMethod);
+    return;
+  }
+  if (!this->WarnedAccelerationFallback)
+  {
+    this->WarnedAccelerationFallback = true;
+    vtkWarningMacro("The " << this->GetSearchMethodAsString()
+                           << " search has no usable acceleration image; searching with "
+                              "LinearBinary instead.");
+  }
+  this->SetActiveSearchMethod(LINEAR_BINARY);
+}
+
+vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
+{
+  // only the image the chosen method reads, rebuilt only when the relief texture changes
+  if (!vtkMaximumMipmapFilter::SafeDownCast(this->AccelerationFilter))
+  {
+    this->AccelerationFilter = vtkSmartPointer<vtkMaximumMipmapFilter>::New();
+    this->AccelerationFilter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
+    this->AccelerationFilter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
+  }
+  this->AccelerationFilter->SetInputData(this->ReliefTextureFilter->GetOutput());
+  this->AccelerationFilter->Update();
+  return this->AccelerationFilter->GetOutput();
+}
+
+bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
+{
+  int relief[3];
+  this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
+  int expected[2];
+  vtkMaximumMipmapFilter::GetAtlasSize(relief[0], relief[1], expected);
+  int dimensions[3];
+  acceleration->GetDimensions(dimensions);
+  vtkDataArray* values = acceleration->GetPointData()->GetScalars();
+  if (values && values->GetDataType() == VTK_FLOAT && values->GetNumberOfComponents() == 1 &&
+    dimensions[0] == expected[0] && dimensions[1] == expected[1] && dimensions[2] == 1)
+  {
+    return true;
+  }
+  vtkErrorMacro("The acceleration image is "
+    << dimensions[0] << "x" << dimensions[1] << "x" << dimensions[2] << " with "
+    << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
+    << (values ? values->GetDataTypeAsString() : "nothing") << "; the "
+    << this->GetSearchMethodAsString() << " search of this " << relief[0] << "x" << relief[1]
+    << " height map needs vtkMaximumMipmapFilter's output for it: " << expected[0] << "x"
+    << expected[1] << ", 1 component of float. Connect that filter's output, or none to let "
+    << "the mapper build it.");
+  return false;
+}
+
+bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration)
+{
+  int relief[3];
+  this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!UploadFetchedTexture(this->AccelerationTexture, window,
+        AccelerationLevels(acceleration, true, relief[0], relief[1]), 1))
+  {
+    vtkErrorMacro("Could not upload the " << this->GetSearchMethodAsString()
+                                          << " acceleration image to the GPU.");
+    return false;
+  }
+  return true;
+}
+
 void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
 {
   // Remapping calls Modified(), which rebuilds the buffers: only when a name changes.
@@ -360,6 +590,10 @@ void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
 bool vtkOpenGLReliefMapper::UpdateRelief(vtkRenderer* ren)
 {
   const bool relief = this->UpdateReliefSurface() && this->UpdateReliefTexture(ren);
+  if (relief)
+  {
+    this->UpdateAcceleration(ren);
+  }
   if (relief && this->DepthScale <= 0.0 && !this->WarnedFlatDepthScale)
   {
     this->WarnedFlatDepthScale = true;
@@ -384,6 +618,10 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     this->ReliefTexture->Activate();
     this->DepthTexture->Activate();
+    if (NeedsAcceleration(this->ActiveSearchMethod))
+    {
+      this->AccelerationTexture->Activate();
+    }
   }
 }
 
@@ -391,6 +629,10 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
 {
   if (this->DrawingRelief)
   {
+    if (NeedsAcceleration(this->ActiveSearchMethod))
+    {
+      this->AccelerationTexture->Deactivate();
+    }
     this->DepthTexture->Deactivate();
     this->ReliefTexture->Deactivate();
   }
@@ -462,12 +704,16 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
 {
   std::string declarations = vtkReliefFragmentDec;
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
-  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search", vtkReliefSearch);
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
+    std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSearchMethod);
   // VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit,
   // unless that slot carries the colour coordinates of scalars mapped through a texture.
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
     this->ColorTextureMap ? "" : "#define tcoordVCVSOutput reliefHitTCoord");
   std::string fragmentSource = fragmentShader->GetSource();
+  // exact cell tests read a cell's four corners in one gather where GL offers it
+  vtkShaderProgram::Substitute(fragmentSource, "//VTK::System::Dec",
+    "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable\n");
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
     "//VTK::Edges::Dec\n" + this->GetSearchDefines() + declarations);
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
@@ -561,6 +807,11 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   program->SetUniformi("reliefSelfShadowing", this->SelfShadowing ? 1 : 0);
   program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
+  if (NeedsAcceleration(this->ActiveSearchMethod))
+  {
+    program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
+    program->SetUniformi("reliefPyramidTop", this->AccelerationTexture->GetMaxLevel());
+  }
 }
 
 void vtkOpenGLReliefMapper::SetCameraShaderParameters(
@@ -609,6 +860,8 @@ void vtkOpenGLReliefMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->ReliefTexture->ReleaseGraphicsResources(window);
   this->DepthTexture->ReleaseGraphicsResources(window);
+  this->AccelerationTexture->ReleaseGraphicsResources(window);
+  this->UploadedAcceleration = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -616,6 +869,9 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SearchMethod: " << this->GetSearchMethodAsString() << "\n";
+  os << indent << "ActiveSearchMethod: " << GetSearchMethodAsString(this->ActiveSearchMethod)
+     << "\n";
+  os << indent << "Acceleration: " << this->GetAcceleration() << "\n";
   os << indent << "LinearSteps: " << this->LinearSteps << "\n";
   os << indent << "BinarySteps: " << this->BinarySteps << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";

@@ -16,7 +16,10 @@
  * texture (sampled at the hit) and the renderer's lights apply as for any actor.
  *
  * Every search method finds the first intersection of the ray with the height field;
- * the choice is made at shader build time. Setters that change only a uniform
+ * the choice is made at shader build time (see SetSearchMethod()). Methods that need
+ * an acceleration image (MaximumMipmap's pyramid) build it themselves from the height
+ * map, once per change of the map, unless one is given on port 2
+ * (SetAccelerationConnection()). Setters that change only a uniform
  * (DepthScale, step counts, SelfShadowing, DepthCorrection, DisplayMode) neither
  * rebuild the shader nor the buffers.
  */
@@ -26,8 +29,10 @@
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkReliefRenderingModule.h"
+#include "vtkSmartPointer.h" // for AccelerationFilter
 
 class vtkCallbackCommand;
+class vtkImageAlgorithm;
 class vtkImageData;
 class vtkMatrix3x3;
 class vtkReliefTangentFrameFilter;
@@ -44,20 +49,49 @@ public:
   enum SearchMethods
   {
     LINEAR = 0,
-    LINEAR_BINARY = 1
+    LINEAR_BINARY = 1,
+    SECANT = 2,
+    EXACT_DDA = 3,
+    MAXIMUM_MIPMAP = 6
   };
 
   ///@{
   /**
-   * How the view ray meets the height field. LinearBinary (default): LinearSteps fixed
-   * steps, then BinarySteps of bisection. Linear: fixed steps only. Changing the method
-   * rebuilds the shader once.
+   * How the view ray meets the height field (Documentation/methods.md compares them).
+   * - LinearBinary (default): LinearSteps fixed steps, then BinarySteps of bisection
+   *   (Policarpo et al. 2005). Fast; misses features thinner than a step.
+   * - Linear: the fixed steps alone.
+   * - Secant: the fixed steps, then BinarySteps of secant refinement (parallax occlusion
+   *   mapping, Tatarchuk 2006; 0 refinements is POM's single interpolation).
+   * - ExactDDA: every texel cell the ray crosses, each intersected exactly with its
+   *   bilinear patch (Baboud and Decoret 2006 s3.3). Exact; cost grows with the run.
+   * - MaximumMipmap: skips blocks of cells the ray passes over, using a pyramid of
+   *   highest points (Tevs et al. 2008), then intersects cells exactly. Exact; about
+   *   log n steps.
+   * The exact methods read the full-resolution field and ignore the step counts.
+   * Changing the method rebuilds the shader once.
    */
   void SetSearchMethod(int method);
   vtkGetMacro(SearchMethod, int);
   void SetSearchMethodToLinear() { this->SetSearchMethod(LINEAR); }
   void SetSearchMethodToLinearBinary() { this->SetSearchMethod(LINEAR_BINARY); }
+  void SetSearchMethodToSecant() { this->SetSearchMethod(SECANT); }
+  void SetSearchMethodToExactDDA() { this->SetSearchMethod(EXACT_DDA); }
+  void SetSearchMethodToMaximumMipmap() { this->SetSearchMethod(MAXIMUM_MIPMAP); }
   const char* GetSearchMethodAsString();
+  static const char* GetSearchMethodAsString(int method);
+  ///@}
+
+  ///@{
+  /**
+   * A precomputed acceleration image for the search method (optional port 2): the
+   * output of vtkMaximumMipmapFilter for MaximumMipmap, made from the same height map.
+   * Without one the mapper builds what its method needs. An image that does not fit
+   * the method or the map is reported, and the search falls back to LinearBinary.
+   */
+  void SetAccelerationConnection(vtkAlgorithmOutput* output);
+  void SetAccelerationData(vtkImageData* image);
+  vtkImageData* GetAcceleration();
   ///@}
 
   ///@{
@@ -147,6 +181,11 @@ protected:
   bool UpdateRelief(vtkRenderer* ren);
   bool UpdateReliefSurface();
   bool UpdateReliefTexture(vtkRenderer* ren);
+  void UpdateAcceleration(vtkRenderer* ren);
+  vtkImageData* ComputeAcceleration();
+  bool CheckAcceleration(vtkImageData* acceleration);
+  bool UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration);
+  void SetActiveSearchMethod(int method);
   void MapReliefAttributes(bool relief);
   void InsertReliefVertexShader(vtkShader* vertexShader);
   void InsertReliefFragmentShader(vtkShader* fragmentShader, int lightComplexity);
@@ -168,6 +207,14 @@ protected:
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
   vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth) in half floats, for normals
   vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
+  vtkNew<vtkTextureObject> AccelerationTexture; // what the search method needs besides
+  vtkSmartPointer<vtkImageAlgorithm> AccelerationFilter; // builds it, for SearchMethod
+  vtkTimeStamp AccelerationUploadTime;
+  vtkImageData* UploadedAcceleration = nullptr; // compared by address only
+  int ActiveSearchMethod = LINEAR_BINARY; // SearchMethod, or its fallback
+  int AccelerationMethod = -1; // the method AccelerationTexture was built for
+  bool AccelerationUsable = false;
+  bool WarnedAccelerationFallback = false;
   vtkTimeStamp ReliefTextureUploadTime;
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed

@@ -204,11 +204,12 @@ DepthField RandomField(int width, int height, unsigned seed, float low, float hi
   return field;
 }
 
-DepthField StonesTerrain()
+// A height map of Data/ as the relief texture filter turns it into depths.
+DepthField DataField(const char* file)
 {
   const char* data = std::getenv("RELIEF_DATA_DIR");
   vtkNew<vtkOpenImageIOReader> reader;
-  reader->SetFileName((std::string(data ? data : "Data") + "/stones_height.png").c_str());
+  reader->SetFileName((std::string(data ? data : "Data") + "/" + file).c_str());
   vtkNew<vtkReliefTextureFilter> relief;
   relief->SetInputConnection(reader->GetOutputPort());
   relief->Update();
@@ -253,7 +254,8 @@ std::vector<Scene> Scenes()
     }
   }
   scenes.push_back(MakeScene("checkerboard", checker));
-  scenes.push_back(MakeScene("16-bit terrain", StonesTerrain()));
+  scenes.push_back(MakeScene("16-bit terrain", DataField("stones_height.png")));
+  scenes.push_back(MakeScene("rivets", DataField("rivets_height.png")));
   scenes.push_back(MakeScene("non-power-of-two", RandomField(100, 37, 14, 0.3f, 1.0f)));
   return scenes;
 }

@@ -2,6 +2,8 @@
 // the per-light shadow query used by VTK's lighting code.
 uniform sampler2D reliefTexture;      // (nx, ny, nz, depth) from vtkReliefTextureFilter
 uniform sampler2D reliefDepthTexture; // its depth alone, for the searches
+uniform sampler2D reliefAccelerationTexture; // what the search method reads besides
+uniform int reliefPyramidTop;
 uniform vec2 reliefTextureSize;    // texels per tile
 uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio
 uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief
@@ -39,6 +41,27 @@ vec4 reliefTextureAtRay(sampler2D sampler, vec2 uv)
 }
 
 #define RELIEF_DEPTH(uv) textureLod(reliefDepthTexture, uv, reliefLod).r
+#define RELIEF_DEPTH_SIZE reliefTextureSize
+// a cell's corners (i, j), (i+1, j), (i, j+1), (i+1, j+1), the texture repeating
+#ifdef GL_ARB_texture_gather
+#define RELIEF_CELL_DEPTHS(cell) \
+  textureGather(reliefDepthTexture, ((cell) + 1.0) / reliefTextureSize).wzxy
+#else
+#define RELIEF_CELL_DEPTHS(cell) reliefCellDepths(cell)
+vec4 reliefCellDepths(vec2 cell)
+{
+  ivec2 low = ivec2(mod(cell, reliefTextureSize));
+  ivec2 high = ivec2(mod(cell + 1.0, reliefTextureSize));
+  return vec4(texelFetch(reliefDepthTexture, low, 0).r,
+    texelFetch(reliefDepthTexture, ivec2(high.x, low.y), 0).r,
+    texelFetch(reliefDepthTexture, ivec2(low.x, high.y), 0).r,
+    texelFetch(reliefDepthTexture, high, 0).r);
+}
+#endif
+#define RELIEF_PYRAMID_DEPTH(node, level) \
+  texelFetch(reliefAccelerationTexture, ivec2(node), level).r
+#define RELIEF_PYRAMID_SIZE(level) vec2(textureSize(reliefAccelerationTexture, level))
+#define RELIEF_PYRAMID_TOP reliefPyramidTop
 
 //VTK::Relief::Common
 //VTK::Relief::Search

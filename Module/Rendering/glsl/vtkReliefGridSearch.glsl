@@ -160,7 +160,7 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
   for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
   {
     // the node's cells, as texel coordinates
-    float span = exp2(float(level));
+    float span = float(1 << level); // exact, unlike exp2 on some GPUs
     vec2 levelSize = RELIEF_PYRAMID_SIZE(level);
     vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
     vec2 low = origin + node * span;
@@ -185,9 +185,11 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
       }
       else
       {
-        // down into the child under the ray where it reaches the node's top
+        // down into the child under the ray where it reaches the node's top; rounding
+        // must never pick the child ahead (its part before would be skipped), so ask
+        // just behind: a child behind is left again at once, by the neighbour step
         t = max(t, tReach);
-        vec2 at = reliefGridAt(grid, t);
+        vec2 at = reliefGridAt(grid, t) - 1e-3f * signs;
         level -= 1;
         float childSpan = 0.5f * span;
         vec2 childSize = RELIEF_PYRAMID_SIZE(level);
