@@ -77,7 +77,6 @@ struct DepthPyramid
     return this->Levels[level][static_cast<size_t>(node.y) * this->Widths[level] +
       static_cast<size_t>(node.x)];
   }
-  vec2 Size(int level) const { return vec2(this->Widths[level], this->Heights[level]); }
 };
 
 /// The field and pyramid the shader code reads; set them before calling a search.
@@ -101,7 +100,6 @@ inline vec4 CellDepths(vec2 cell)
 #define RELIEF_DEPTH_SIZE vec2(CurrentField->Width, CurrentField->Height)
 #define RELIEF_CELL_DEPTHS(cell) ReliefCpuMirror::CellDepths(cell)
 #define RELIEF_PYRAMID_DEPTH(node, level) CurrentPyramid->At(node, level)
-#define RELIEF_PYRAMID_SIZE(level) CurrentPyramid->Size(level)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
 // shader functions are not inline: one copy per test source
 namespace
@@ -115,7 +113,6 @@ namespace
 #undef RELIEF_DEPTH_SIZE
 #undef RELIEF_CELL_DEPTHS
 #undef RELIEF_PYRAMID_DEPTH
-#undef RELIEF_PYRAMID_SIZE
 #undef RELIEF_PYRAMID_TOP
 }
 

@@ -60,7 +60,6 @@ vec4 reliefCellDepths(vec2 cell)
 #endif
 #define RELIEF_PYRAMID_DEPTH(node, level) \
   texelFetch(reliefAccelerationTexture, ivec2(node), level).r
-#define RELIEF_PYRAMID_SIZE(level) vec2(textureSize(reliefAccelerationTexture, level))
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
 
 //VTK::Relief::Common

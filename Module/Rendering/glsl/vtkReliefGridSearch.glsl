@@ -5,7 +5,7 @@
 // MaximumMipmap skips whole blocks of cells the ray passes over (Tevs, Ihrke and
 // Seidel 2008). Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules.
 // MaximumMipmap also needs RELIEF_PYRAMID_DEPTH(node, level): the least depth (highest
-// point) of a pyramid node, RELIEF_PYRAMID_SIZE(level) (vec2) and RELIEF_PYRAMID_TOP.
+// point) of a pyramid node, and RELIEF_PYRAMID_TOP, its top level.
 
 // Upper bound on loop iterations, so a shader always terminates.
 #define RELIEF_MAX_ITERATIONS 65536
@@ -140,9 +140,17 @@ ReliefHit reliefSearchExactDDA(ReliefRay ray)
 // which are intersected exactly. Level L has GL's mipmap size max(1, size >> L); node i
 // covers cells [i 2^L, (i + 1) 2^L), the last node of a row everything to the tile's
 // edge, so sizes need not be powers of two.
+// Nodes per axis at `level`, computed rather than asked of the texture: some GL drivers
+// answer textureSize for one level per group of fragments.
+vec2 reliefPyramidSize(int level)
+{
+  vec2 size = floor(RELIEF_DEPTH_SIZE / float(1 << level));
+  return vec2(max(size.x, 1.0f), max(size.y, 1.0f));
+}
+
 vec2 reliefPyramidParent(vec2 node, int level)
 {
-  vec2 parentSize = RELIEF_PYRAMID_SIZE(level + 1);
+  vec2 parentSize = reliefPyramidSize(level + 1);
   return min(floor(0.5f * node), vec2(parentSize.x - 1.0f, parentSize.y - 1.0f));
 }
 
@@ -161,7 +169,7 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
   {
     // the node's cells, as texel coordinates
     float span = float(1 << level); // exact, unlike exp2 on some GPUs
-    vec2 levelSize = RELIEF_PYRAMID_SIZE(level);
+    vec2 levelSize = reliefPyramidSize(level);
     vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
     vec2 low = origin + node * span;
     vec2 high = vec2(node.x >= levelSize.x - 1.0f ? origin.x + size.x : low.x + span,
@@ -192,7 +200,7 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
         vec2 at = reliefGridAt(grid, t) - 1e-3f * signs;
         level -= 1;
         float childSpan = 0.5f * span;
-        vec2 childSize = RELIEF_PYRAMID_SIZE(level);
+        vec2 childSize = reliefPyramidSize(level);
         vec2 lastChild = vec2(node.x >= levelSize.x - 1.0f ? childSize.x - 1.0f : 2.0f * node.x + 1.0f,
           node.y >= levelSize.y - 1.0f ? childSize.y - 1.0f : 2.0f * node.y + 1.0f);
         node = clamp(floor((at - origin) / childSpan), 2.0f * node, lastChild);
