@@ -185,6 +185,42 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int w
   return mapper;
 }
 
+vtkSmartPointer<vtkImageData> ThinFeatures()
+{
+  constexpr int Size = 64;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(Size, Size, 1);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* heights = static_cast<float*>(image->GetScalarPointer());
+  for (int j = 0; j < Size; ++j)
+  {
+    for (int i = 0; i < Size; ++i)
+    {
+      const bool wall = i % 16 == 8 || (j == 40 && i >= 16 && i < 48);
+      const bool spike = i % 16 == 0 && j % 8 == 4;
+      heights[j * Size + i] = wall || spike ? 1.0f : 0.2f;
+    }
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
+  vtkRenderWindow* window, int width, int height, double angle, int method)
+{
+  auto renderer = LitRenderer(window, width, height);
+  auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+  mapper->SetInputData(Square(1.0));
+  mapper->SetHeightMapData(ThinFeatures());
+  mapper->SetDepthScale(0.05);
+  mapper->SetSearchMethod(method);
+  renderer->AddActor(ReliefActor(mapper, ""));
+  ViewSquare(renderer, angle);
+  // a grazing view shrinks the square: come closer
+  renderer->GetActiveCamera()->Dolly(1.0 + angle / 80.0);
+  renderer->ResetCameraClippingRange();
+  return mapper;
+}
+
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height)
 {
   auto renderer = LitRenderer(window, width, height);

@@ -61,6 +61,12 @@ void ViewSquare(vtkRenderer* renderer, double angle);
 /// Bricks on a square with `tiles` x `tiles` repeats, seen `angle` degrees off its normal.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int width, int height,
   double angle, double tiles = 2.0, double depthScale = 0.04);
+/// Thin features (seed 002 Fig. 11): a 64x64 height image (white = high) of walls and
+/// spikes one texel wide rising from a low floor.
+vtkSmartPointer<vtkImageData> ThinFeatures();
+/// Thin features on a square seen `angle` degrees from its normal, searched by `method`.
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
+  vtkRenderWindow* window, int width, int height, double angle, int method);
 /// Cobblestones on a coarse torus.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height);
 /// Rivets under a low light, self-shadowing on (left half) and off (right half).

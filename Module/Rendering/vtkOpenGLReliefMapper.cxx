@@ -79,72 +79,18 @@ bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wi
   return true;
 }
 
-// One level of an acceleration image: its texels, row by row.
-struct AccelerationLevel
-{
-  int Size[2];
-  std::vector<float> Values;
-};
-
-// The levels of `image` (one-level images, or the pyramid atlas of
-// vtkMaximumMipmapFilter for a width x height map when `pyramid` is set).
-std::vector<AccelerationLevel> AccelerationLevels(
-  vtkImageData* image, bool pyramid, int width, int height)
+// A float texture the searches read with texelFetch only: the image as it is.
+bool UploadFetchedTexture(
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, vtkImageData* image)
 {
   vtkDataArray* values = image->GetPointData()->GetScalars();
   const int components = values->GetNumberOfComponents();
-  const int rowLength = image->GetDimensions()[0];
-  std::vector<AccelerationLevel> levels;
-  int origin[2] = { 0, 0 };
-  int size[2] = { width, height };
-  for (int level = 0; pyramid
-         ? vtkMaximumMipmapFilter::GetLevelPlacement(width, height, level, origin, size)
-         : level == 0;
-       ++level)
-  {
-    AccelerationLevel copy{ { size[0], size[1] }, {} };
-    copy.Values.reserve(static_cast<size_t>(size[0]) * size[1] * components);
-    for (int j = 0; j < size[1]; ++j)
-    {
-      for (int i = 0; i < size[0]; ++i)
-      {
-        const vtkIdType texel = static_cast<vtkIdType>(origin[1] + j) * rowLength + origin[0] + i;
-        for (int c = 0; c < components; ++c)
-        {
-          copy.Values.push_back(static_cast<float>(values->GetComponent(texel, c)));
-        }
-      }
-    }
-    levels.push_back(std::move(copy));
-  }
-  return levels;
-}
-
-// A float texture the searches read with texelFetch only, every level given.
-bool UploadFetchedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
-  const std::vector<AccelerationLevel>& levels, int components)
-{
-  const unsigned int internalFormat = components == 1 ? GL_R32F : GL_RG32F;
   texture->SetContext(window);
-  texture->SetInternalFormat(internalFormat);
-  texture->SetMinificationFilter(
-    levels.size() > 1 ? vtkTextureObject::NearestMipmapNearest : vtkTextureObject::Nearest);
+  texture->SetInternalFormat(components == 1 ? GL_R32F : GL_RG32F);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetMaxLevel(static_cast<int>(levels.size()) - 1);
-  if (!texture->Create2DFromRaw(levels[0].Size[0], levels[0].Size[1], components, VTK_FLOAT,
-        const_cast<float*>(levels[0].Values.data())))
-  {
-    return false;
-  }
-  texture->Activate();
-  for (size_t level = 1; level < levels.size(); ++level)
-  {
-    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), internalFormat, levels[level].Size[0],
-      levels[level].Size[1], 0, components == 1 ? GL_RED : GL_RG, GL_FLOAT,
-      levels[level].Values.data());
-  }
-  texture->Deactivate();
-  return true;
+  return texture->Create2DFromRaw(image->GetDimensions()[0], image->GetDimensions()[1],
+    components, VTK_FLOAT, values->GetVoidPointer(0));
 }
 
 // Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
@@ -543,11 +489,8 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
 
 bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration)
 {
-  int relief[3];
-  this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!UploadFetchedTexture(this->AccelerationTexture, window,
-        AccelerationLevels(acceleration, true, relief[0], relief[1]), 1))
+  if (!UploadFetchedTexture(this->AccelerationTexture, window, acceleration))
   {
     vtkErrorMacro("Could not upload the " << this->GetSearchMethodAsString()
                                           << " acceleration image to the GPU.");
@@ -810,7 +753,19 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   if (NeedsAcceleration(this->ActiveSearchMethod))
   {
     program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
-    program->SetUniformi("reliefPyramidTop", this->AccelerationTexture->GetMaxLevel());
+    int relief[3];
+    this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
+    float rows[32] = {};
+    int origin[2];
+    int size[2];
+    int top = 0;
+    while (top + 1 < 32 &&
+      vtkMaximumMipmapFilter::GetLevelPlacement(relief[0], relief[1], top + 1, origin, size))
+    {
+      rows[++top] = static_cast<float>(origin[1]);
+    }
+    program->SetUniformi("reliefPyramidTop", top);
+    program->SetUniform1fv("reliefPyramidRows", 32, rows);
   }
 }
 

@@ -85,6 +85,23 @@ TEST_F(ReliefExactSearch, MaximumMipmapTakesFewerSamplesThanExactDDAAtGrazingAng
   EXPECT_LT(mipmap, dda / 2) << "DDA " << dda << ", maximum mipmap " << mipmap;
 }
 
+TEST_F(ReliefExactSearch, AFloorAtTheDeepestLevelIsMetAtTheEndOfTheRay)
+{
+  // depth 1 is met at t = 1 exactly, where rounding may let the cell tests pass it: the
+  // hit must still be a hit, with its clear point above it (else it shadows itself)
+  Scene floor = MakeScene("floor", DepthField::FromFunction(64, 64, [](float, float) { return 1.0f; }));
+  Use(floor);
+  for (const ReliefRay& ray : ViewRays(300, 0.1f))
+  {
+    for (const ReliefHit& hit : { reliefSearchExactDDA(ray), reliefSearchMaximumMipmap(ray) })
+    {
+      ASSERT_TRUE(hit.hit);
+      ASSERT_NEAR(hit.t, 1.0f, 1e-5f);
+      ASSERT_LT(hit.clear.z, hit.position.z);
+    }
+  }
+}
+
 TEST_F(ReliefExactSearch, FixedStepMethodsMissRatesAreMeasured)
 {
   // Not exact by design: the share of rays whose hit is off by more than a texel is

@@ -58,8 +58,11 @@ vec4 reliefCellDepths(vec2 cell)
     texelFetch(reliefDepthTexture, high, 0).r);
 }
 #endif
-#define RELIEF_PYRAMID_DEPTH(node, level) \
-  texelFetch(reliefAccelerationTexture, ivec2(node), level).r
+// The pyramid is vtkMaximumMipmapFilter's atlas, one level of texture: a level's lod
+// in texelFetch may be taken for a whole group of fragments by some drivers (llvmpipe).
+uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
+#define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefAccelerationTexture, \
+  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0).r
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
 
 //VTK::Relief::Common

@@ -128,10 +128,20 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
   return reliefGridHit(ray, grid, tEnd, false, samples);
 }
 
+// The end of a search that met nothing before t = 1: a view ray is as deep as the deepest
+// level there, so it ends on the field (a floor at depth 1 is met exactly there, and
+// rounding may let the cell tests pass it by).
+ReliefHit reliefGridEnd(ReliefRay ray, ReliefGridRay grid, int samples)
+{
+  return reliefGridHit(ray, grid, 1.0f, grid.depth + grid.descent >= 1.0f, samples);
+}
+
 // ExactDDA: the whole ray, cell by cell.
 ReliefHit reliefSearchExactDDA(ReliefRay ray)
 {
-  return reliefWalkCells(ray, reliefGridRay(ray, RELIEF_DEPTH_SIZE), 0.0f, 1.0f, 0);
+  ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
+  ReliefHit hit = reliefWalkCells(ray, grid, 0.0f, 1.0f, 0);
+  return hit.hit ? hit : reliefGridEnd(ray, grid, hit.samples);
 }
 
 // MaximumMipmap: a quadtree of the cells, each node holding the least depth of the
@@ -238,5 +248,5 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
       }
     }
   }
-  return reliefGridHit(ray, grid, 1.0f, false, samples);
+  return reliefGridEnd(ray, grid, samples);
 }
