@@ -368,6 +368,23 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return false; // the filter has said why
   }
 
+  int dimensions[3];
+  relief->GetDimensions(dimensions);
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  const int limit = vtkTextureObject::GetMaximumTextureSize(window);
+  if (dimensions[0] > limit || dimensions[1] > limit)
+  {
+    if (this->OversizeReportTime <= relief->GetMTime())
+    {
+      this->OversizeReportTime.Modified(); // said once per height map
+      vtkErrorMacro("The height map is " << dimensions[0] << "x" << dimensions[1]
+                                         << " texels; this OpenGL takes textures of at most "
+                                         << limit << "x" << limit
+                                         << ". Resample it (vtkImageResize) to fit.");
+    }
+    return false;
+  }
+
   if (this->ReliefTexture->GetHandle() != 0 &&
     this->ReliefTextureUploadTime > relief->GetMTime())
   {
@@ -384,9 +401,6 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   {
     depths->SetValue(texel, static_cast<float>(texels->GetComponent(texel, 3)));
   }
-  int dimensions[3];
-  relief->GetDimensions(dimensions);
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!UploadMipmappedTexture(this->ReliefTexture, window, dimensions, texels, GL_RGBA16F) ||
     !UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths, GL_R32F))
   {

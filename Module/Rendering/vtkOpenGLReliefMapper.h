@@ -82,6 +82,12 @@ public:
   static const char* GetSearchMethodAsString(int method);
   ///@}
 
+  /**
+   * The method the last render searched with: SearchMethod, or LinearBinary when the
+   * method's acceleration image could not be had.
+   */
+  vtkGetMacro(ActiveSearchMethod, int);
+
   ///@{
   /**
    * A precomputed acceleration image for the search method (optional port 2): the
@@ -216,6 +222,7 @@ protected:
   bool AccelerationUsable = false;
   bool WarnedAccelerationFallback = false;
   vtkTimeStamp ReliefTextureUploadTime;
+  vtkTimeStamp OversizeReportTime; // when a too large height map was last reported
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
   bool DrawingRelief = false;
