@@ -11,6 +11,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLReliefMapper.h"
@@ -25,6 +27,7 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <iterator>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -65,8 +68,15 @@ std::string Trim(const std::string& text)
   return first == std::string::npos ? "" : text.substr(first);
 }
 
-// The mean red (samples) over covered pixels, and the covered fraction of the view.
-std::pair<double, double> MeanSamples(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper)
+struct SampleStatistics
+{
+  double Mean = 0.0;
+  int Maximum = 0;
+  double Coverage = 0.0; // covered fraction of the view
+};
+
+// Samples per covered pixel (the red channel in SampleCount mode).
+SampleStatistics Samples(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper)
 {
   mapper->SetDisplayModeToSampleCount();
   window->Render();
@@ -74,15 +84,89 @@ std::pair<double, double> MeanSamples(vtkRenderWindow* window, vtkOpenGLReliefMa
   mapper->SetDisplayModeToShaded();
   double sum = 0.0;
   size_t covered = 0;
+  SampleStatistics statistics;
   for (size_t i = 0; i + 2 < pixels.size(); i += 3)
   {
     if (pixels[i + 1] == 0 && pixels[i + 2] == 0) // background is blue
     {
       sum += pixels[i];
+      statistics.Maximum = std::max<int>(statistics.Maximum, pixels[i]);
       ++covered;
     }
   }
-  return { covered ? sum / covered : 0.0, static_cast<double>(covered) / (pixels.size() / 3) };
+  statistics.Mean = covered ? sum / covered : 0.0;
+  statistics.Coverage = static_cast<double>(covered) / (pixels.size() / 3);
+  return statistics;
+}
+
+void ViewSquareFilling(vtkRenderer* renderer, double angle)
+{
+  ReliefScene::ViewSquare(renderer, angle);
+  renderer->GetActiveCamera()->Dolly(2.2); // the square fills the view
+  renderer->ResetCameraClippingRange();
+}
+
+// Seed 002's Table 1 for every search method: the same height field at three
+// resolutions and three view angles; each method's cost relative to LinearBinary's,
+// measured in the same run, interleaved.
+std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkOpenGLReliefMapper* relief, int frames, int rounds)
+{
+  const int methods[] = { vtkOpenGLReliefMapper::LINEAR_BINARY, vtkOpenGLReliefMapper::LINEAR,
+    vtkOpenGLReliefMapper::SECANT, vtkOpenGLReliefMapper::EXACT_DDA,
+    vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
+  std::ostringstream table;
+  table << std::fixed << std::setprecision(2);
+  table << "| height map | angle | method | ms/frame (median) | x LinearBinary | "
+           "samples/pixel (mean) | x LinearBinary | samples/pixel (max) |\n"
+        << "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |\n";
+  relief->SetLinearSteps(10);
+  relief->SetBinarySteps(5);
+  relief->SetSelfShadowing(true);
+  vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
+  for (int size : { 128, 512, 2048 })
+  {
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(heights);
+    resize->SetOutputDimensions(size, size, 1);
+    resize->Update();
+    relief->SetHeightMapData(resize->GetOutput());
+    for (double angle : { 0.0, 45.0, 80.0 })
+    {
+      ViewSquareFilling(renderer, angle);
+      std::vector<std::vector<double>> milliseconds(std::size(methods));
+      std::vector<SampleStatistics> samples(std::size(methods));
+      for (int round = 0; round < rounds; ++round)
+      {
+        for (size_t m = 0; m < std::size(methods); ++m)
+        {
+          relief->SetSearchMethod(methods[m]);
+          if (round == 0)
+          {
+            samples[m] = Samples(window, relief);
+          }
+          const std::vector<double> timed = ReliefScene::FrameMilliseconds(window, 1, frames);
+          milliseconds[m].insert(milliseconds[m].end(), timed.begin(), timed.end());
+        }
+      }
+      const double baseMilliseconds = ReliefScene::Median(milliseconds[0]);
+      for (size_t m = 0; m < std::size(methods); ++m)
+      {
+        const double median = ReliefScene::Median(milliseconds[m]);
+        table << "| " << size << "x" << size << " | " << angle << " | "
+              << vtkOpenGLReliefMapper::GetSearchMethodAsString(methods[m]) << " | " << median
+              << " | " << median / baseMilliseconds << " | " << samples[m].Mean << " | "
+              << samples[m].Mean / samples[0].Mean << " | "
+              << (samples[m].Maximum >= 255 ? ">= 255" : std::to_string(samples[m].Maximum))
+              << " |\n";
+      }
+      std::cout << "methods: " << size << "x" << size << " at " << angle << " degrees done\n";
+    }
+  }
+  relief->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
+  relief->SetSearchMethodToLinearBinary();
+  ViewSquareFilling(renderer, 45.0);
+  return table.str();
 }
 }
 
@@ -159,7 +243,9 @@ int main(int argc, char* argv[])
         relief->SetSelfShadowing(configuration.SelfShadowing);
         if (round == 0)
         {
-          std::tie(configuration.MeanSamples, coverage) = MeanSamples(window, relief);
+          const SampleStatistics statistics = Samples(window, relief);
+          configuration.MeanSamples = statistics.Mean;
+          coverage = statistics.Coverage;
         }
       }
       const std::vector<double> milliseconds = ReliefScene::FrameMilliseconds(window, 3, frames);
@@ -167,6 +253,9 @@ int main(int argc, char* argv[])
         configuration.Milliseconds.end(), milliseconds.begin(), milliseconds.end());
     }
   }
+
+  const std::string methodsTable =
+    MethodsTable(window, renderer, relief, std::max(3, frames / 4), rounds);
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -215,14 +304,21 @@ int main(int argc, char* argv[])
           << " threads; " << system << "; OpenGL: " << gl << "; VTK "
           << vtkVersion::GetVTKVersion() << "; date "
           << date << ".\n";
-  std::cout << context.str() << "\n" << table.str();
+  const std::string methodsContext =
+    "Search methods (seed 002 Table 1): the same square and light, the stones height map\n"
+    "resampled to each size (4 tiles across the square), DepthScale 0.02, self-shadowing on,\n"
+    "step counts 10 + 5; each method's figures relative to LinearBinary's in the same run.\n"
+    "Samples are height reads per covered pixel (a cell test or pyramid node counts one);\n"
+    "the display caps a pixel's count at 255.\n\n";
+  std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable;
 
   if (!report.empty())
   {
     std::ofstream out(report);
     out << "# Benchmark: relief mapping against plain texturing\n\n"
         << "Produced by `./relief bench --report " << report << "`.\n\n"
-        << context.str() << "\n" << table.str();
+        << context.str() << "\n" << table.str() << "\n## Search methods\n\n"
+        << methodsContext << methodsTable;
     std::cout << "written to " << report << "\n";
   }
   return 0;

@@ -105,6 +105,10 @@ int main(int argc, char* argv[])
       [](vtkRenderWindow* w) { ReliefScene::ShowSelfShadowing(w, 800, 400); } },
     { "interpenetration", "depth correction on (left) and off (right) with a plain sphere",
       [](vtkRenderWindow* w) { ReliefScene::ShowInterpenetration(w, 800, 400); } },
+    { "search_methods",
+      "thin features: Linear, LinearBinary, Secant, ExactDDA, MaximumMipmap at 45 (top) and "
+      "80 degrees",
+      [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1000, 400); } },
     { "sample_count", "height samples per pixel, LinearBinary 10+5 (blue 0, red 20)",
       [](vtkRenderWindow* w) {
         ReliefScene::ShowBricks(w, 640, 480, 45.0)->SetDisplayModeToSampleCount();

@@ -16,6 +16,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTexture.h"
 #include "vtkWindowToImageFilter.h"
@@ -219,6 +220,24 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
   renderer->GetActiveCamera()->Dolly(1.0 + angle / 80.0);
   renderer->ResetCameraClippingRange();
   return mapper;
+}
+
+void ShowSearchMethods(vtkRenderWindow* window, int width, int height)
+{
+  const int methods[] = { vtkOpenGLReliefMapper::LINEAR, vtkOpenGLReliefMapper::LINEAR_BINARY,
+    vtkOpenGLReliefMapper::SECANT, vtkOpenGLReliefMapper::EXACT_DDA,
+    vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
+  for (int row = 0; row < 2; ++row)
+  {
+    for (int column = 0; column < 5; ++column)
+    {
+      ShowThinFeatures(window, width, height, row == 0 ? 80.0 : 45.0, methods[column]);
+      vtkRendererCollection* renderers = window->GetRenderers();
+      vtkRenderer::SafeDownCast(renderers->GetItemAsObject(renderers->GetNumberOfItems() - 1))
+        ->SetViewport(
+        column / 5.0, row / 2.0, (column + 1) / 5.0, (row + 1) / 2.0);
+    }
+  }
 }
 
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height)

@@ -67,6 +67,9 @@ vtkSmartPointer<vtkImageData> ThinFeatures();
 /// Thin features on a square seen `angle` degrees from its normal, searched by `method`.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
   vtkRenderWindow* window, int width, int height, double angle, int method);
+/// Thin features under Linear, LinearBinary, Secant, ExactDDA and MaximumMipmap (left
+/// to right), at 45 degrees (top) and 80 degrees (bottom).
+void ShowSearchMethods(vtkRenderWindow* window, int width, int height);
 /// Cobblestones on a coarse torus.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height);
 /// Rivets under a low light, self-shadowing on (left half) and off (right half).
