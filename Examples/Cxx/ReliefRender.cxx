@@ -33,7 +33,6 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
-#include <cctype>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -78,32 +77,6 @@ struct Options
 // The default depth scale, as a fraction of the mesh's bounding-box diagonal: deep
 // enough to be seen on any mesh, shallow enough for a coarse mesh to carry it.
 constexpr double DefaultDepthFraction = 0.02;
-
-// The search method whose name (as GetSearchMethodAsString gives it) matches `name`,
-// ignoring case and dashes: "exact-dda" is ExactDDA; -1 for none.
-int SearchMethodNamed(const std::string& name)
-{
-  auto squeeze = [](const std::string& text) {
-    std::string result;
-    for (char c : text)
-    {
-      if (c != '-')
-      {
-        result += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      }
-    }
-    return result;
-  };
-  for (int method = 0; method < 16; ++method)
-  {
-    const char* known = vtkOpenGLReliefMapper::GetSearchMethodAsString(method);
-    if (known && squeeze(known) == squeeze(name))
-    {
-      return method;
-    }
-  }
-  return -1;
-}
 
 void PrintUsage(std::ostream& os)
 {
@@ -235,7 +208,7 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
       } },
     { "--search",
       [&options](const std::string& value) {
-        options.SearchMethod = SearchMethodNamed(value);
+        options.SearchMethod = ReliefScene::SearchMethodNamed(value);
         return options.SearchMethod >= 0;
       } },
     { "--linear-steps", integerIn(options.LinearSteps, 1, 512) },

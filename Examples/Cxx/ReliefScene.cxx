@@ -21,6 +21,7 @@
 #include "vtkTexture.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <cctype>
 #include <algorithm>
 #include <chrono>
 
@@ -184,6 +185,30 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int w
   renderer->AddActor(ReliefActor(mapper, "bricks_color.png"));
   ViewSquare(renderer, angle);
   return mapper;
+}
+
+int SearchMethodNamed(const std::string& name)
+{
+  auto squeeze = [](const std::string& text) {
+    std::string result;
+    for (char c : text)
+    {
+      if (c != '-')
+      {
+        result += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      }
+    }
+    return result;
+  };
+  for (int method = 0; method < 16; ++method)
+  {
+    const char* known = vtkOpenGLReliefMapper::GetSearchMethodAsString(method);
+    if (known && squeeze(known) == squeeze(name))
+    {
+      return method;
+    }
+  }
+  return -1;
 }
 
 vtkSmartPointer<vtkImageData> ThinFeatures()

@@ -61,6 +61,9 @@ void ViewSquare(vtkRenderer* renderer, double angle);
 /// Bricks on a square with `tiles` x `tiles` repeats, seen `angle` degrees off its normal.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int width, int height,
   double angle, double tiles = 2.0, double depthScale = 0.04);
+/// The search method named `name` (GetSearchMethodAsString's names, case and dashes
+/// ignored: "exact-dda" is ExactDDA), or -1.
+int SearchMethodNamed(const std::string& name);
 /// Thin features (seed 002 Fig. 11): a 64x64 height image (white = high) of walls and
 /// spikes one texel wide rising from a low floor.
 vtkSmartPointer<vtkImageData> ThinFeatures();

@@ -10,17 +10,11 @@
 #include "vtkRenderWindow.h"
 
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
 
 int TestReliefThinFeatures(int argc, char* argv[])
 {
-  int method = -1;
-  for (int candidate = 0; argc > 2 && candidate < 16; ++candidate)
-  {
-    const char* name = vtkOpenGLReliefMapper::GetSearchMethodAsString(candidate);
-    method = name && std::strcmp(name, argv[1]) == 0 ? candidate : method;
-  }
+  const int method = argc > 2 ? ReliefScene::SearchMethodNamed(argv[1]) : -1;
   if (method < 0)
   {
     std::cerr << "usage: TestReliefThinFeatures METHOD ANGLE [VTK test options]\n";
