@@ -11,15 +11,20 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkConeStepMapFilter.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkMaximumMipmapFilter.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
+#include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkSafetyRadiusFilter.h"
 #include "vtkVersion.h"
 
 #include <algorithm>
@@ -112,9 +117,25 @@ void ViewSquareFilling(vtkRenderer* renderer, double angle)
 std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
   vtkOpenGLReliefMapper* relief, int frames, int rounds)
 {
-  const int methods[] = { vtkOpenGLReliefMapper::LINEAR_BINARY, vtkOpenGLReliefMapper::LINEAR,
-    vtkOpenGLReliefMapper::SECANT, vtkOpenGLReliefMapper::EXACT_DDA,
-    vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
+  // LinearBinary first: the others are measured against it; SafetyRadius exact (e = 0)
+  // and at the tolerance that trades a silhouette error of 0.05 depth for speed
+  struct Method
+  {
+    int Id;
+    double Tolerance;
+  };
+  std::vector<Method> methods = { { vtkOpenGLReliefMapper::LINEAR_BINARY, 0.0 } };
+  for (int method : ReliefScene::SearchMethods())
+  {
+    if (method != vtkOpenGLReliefMapper::LINEAR_BINARY)
+    {
+      methods.push_back({ method, 0.0 });
+    }
+    if (method == vtkOpenGLReliefMapper::SAFETY_RADIUS)
+    {
+      methods.push_back({ method, 0.05 });
+    }
+  }
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
   table << "| height map | angle | method | ms/frame (median) | x LinearBinary | "
@@ -140,7 +161,8 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
       {
         for (size_t m = 0; m < std::size(methods); ++m)
         {
-          relief->SetSearchMethod(methods[m]);
+          relief->SetSearchMethod(methods[m].Id);
+          relief->SetSafetyRadiusTolerance(methods[m].Tolerance);
           if (round == 0)
           {
             samples[m] = Samples(window, relief);
@@ -154,7 +176,12 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
       {
         const double median = ReliefScene::Median(milliseconds[m]);
         table << "| " << size << "x" << size << " | " << angle << " | "
-              << vtkOpenGLReliefMapper::GetSearchMethodAsString(methods[m]) << " | " << median
+              << vtkOpenGLReliefMapper::GetSearchMethodAsString(methods[m].Id);
+        if (methods[m].Tolerance > 0.0)
+        {
+          table << " (e = " << methods[m].Tolerance << ")";
+        }
+        table << " | " << median
               << " | " << median / baseMilliseconds << " | " << samples[m].Mean << " | "
               << samples[m].Mean / samples[0].Mean << " | "
               << (samples[m].Maximum >= 255 ? ">= 255" : std::to_string(samples[m].Maximum))
@@ -165,7 +192,53 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
   }
   relief->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
   relief->SetSearchMethodToLinearBinary();
+  relief->SetSafetyRadiusTolerance(0.0);
   ViewSquareFilling(renderer, 45.0);
+  return table.str();
+}
+
+// The acceleration filters' run times on the stones height map (targets: safety radii
+// and cone map of 512x512 in 5 s, the maximum mipmap of 1024x1024 in 0.2 s), each the
+// median of `rounds` runs.
+std::string FiltersTable(int rounds)
+{
+  vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
+  struct Case
+  {
+    const char* Name;
+    vtkSmartPointer<vtkReliefAccelerationFilter> Filter;
+    int Size;
+  };
+  vtkNew<vtkSafetyRadiusFilter> tolerant;
+  tolerant->SetErrorTolerance(0.05);
+  const Case cases[] = { { "vtkMaximumMipmapFilter", vtkSmartPointer<vtkMaximumMipmapFilter>::New(), 1024 },
+    { "vtkSafetyRadiusFilter (e = 0)", vtkSmartPointer<vtkSafetyRadiusFilter>::New(), 512 },
+    { "vtkSafetyRadiusFilter (e = 0.05)", tolerant.Get(), 512 },
+    { "vtkConeStepMapFilter", vtkSmartPointer<vtkConeStepMapFilter>::New(), 512 } };
+  std::ostringstream table;
+  table << std::fixed << std::setprecision(3);
+  table << "| filter | height map | seconds (median) | target |\n| --- | ---: | ---: | ---: |\n";
+  for (const Case& run : cases)
+  {
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(heights);
+    resize->SetOutputDimensions(run.Size, run.Size, 1);
+    vtkNew<vtkReliefTextureFilter> texture;
+    texture->SetInputConnection(resize->GetOutputPort());
+    texture->Update();
+    run.Filter->SetInputConnection(texture->GetOutputPort());
+    std::vector<double> seconds;
+    for (int round = 0; round < rounds; ++round)
+    {
+      run.Filter->Modified();
+      const auto start = std::chrono::steady_clock::now();
+      run.Filter->Update();
+      seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    table << "| " << run.Name << " | " << run.Size << "x" << run.Size << " | "
+          << ReliefScene::Median(seconds) << " | " << (run.Size == 1024 ? "0.2" : "5") << " |\n";
+  }
   return table.str();
 }
 }
@@ -256,6 +329,7 @@ int main(int argc, char* argv[])
 
   const std::string methodsTable =
     MethodsTable(window, renderer, relief, std::max(3, frames / 4), rounds);
+  const std::string filtersTable = FiltersTable(rounds);
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -310,7 +384,12 @@ int main(int argc, char* argv[])
     "step counts 10 + 5; each method's figures relative to LinearBinary's in the same run.\n"
     "Samples are height reads per covered pixel (a cell test or pyramid node counts one);\n"
     "the display caps a pixel's count at 255.\n\n";
-  std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable;
+  const std::string filtersContext = "Acceleration filters, on the stones height map resampled; "
+                                     "vtkSMPTools backend " +
+    std::string(vtkSMPTools::GetBackend()) + ", " +
+    std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads.\n\n";
+  std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
+            << "\n" << filtersContext << filtersTable;
 
   if (!report.empty())
   {
@@ -318,7 +397,8 @@ int main(int argc, char* argv[])
     out << "# Benchmark: relief mapping against plain texturing\n\n"
         << "Produced by `./relief bench --report " << report << "`.\n\n"
         << context.str() << "\n" << table.str() << "\n## Search methods\n\n"
-        << methodsContext << methodsTable;
+        << methodsContext << methodsTable << "\n## Acceleration filters\n\n" << filtersContext
+        << filtersTable;
     std::cout << "written to " << report << "\n";
   }
   return 0;

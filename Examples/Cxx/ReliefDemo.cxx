@@ -106,9 +106,9 @@ int main(int argc, char* argv[])
     { "interpenetration", "depth correction on (left) and off (right) with a plain sphere",
       [](vtkRenderWindow* w) { ReliefScene::ShowInterpenetration(w, 800, 400); } },
     { "search_methods",
-      "thin features: Linear, LinearBinary, Secant, ExactDDA, MaximumMipmap at 45 (top) and "
-      "80 degrees",
-      [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1000, 400); } },
+      "thin features: Linear, LinearBinary, Secant, ExactDDA, SafetyRadius, ConeStep, "
+      "MaximumMipmap at 45 (top) and 80 degrees",
+      [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1400, 400); } },
     { "sample_count", "height samples per pixel, LinearBinary 10+5 (blue 0, red 20)",
       [](vtkRenderWindow* w) {
         ReliefScene::ShowBricks(w, 640, 480, 45.0)->SetDisplayModeToSampleCount();

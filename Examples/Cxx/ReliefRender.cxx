@@ -64,6 +64,7 @@ struct Options
   int SearchMethod = vtkOpenGLReliefMapper::LINEAR_BINARY;
   int LinearSteps = 10;
   int BinarySteps = 5;
+  double SafetyTolerance = 0.0;
   bool Shadows = true;
   double Azimuth = 0.0;
   double Elevation = 0.0;
@@ -100,7 +101,8 @@ void PrintUsage(std::ostream& os)
         "                       generate texture coordinates for a mesh that has none\n"
         "                       (default: use the mesh's own)\n"
         "  --depth-convention   read the height map as white = deep\n"
-        "  --search linear|linear-binary|secant|exact-dda|maximum-mipmap\n"
+        "  --search linear|linear-binary|secant|exact-dda|safety-radius|cone-step|\n"
+        "           maximum-mipmap\n"
         "                       ray search method (default: linear-binary)\n"
         "  --linear-steps N     linear search steps, 1 to 512 (default: "
      << defaults.LinearSteps
@@ -108,6 +110,8 @@ void PrintUsage(std::ostream& os)
         "  --binary-steps N     binary refinement steps, 0 to 32 (default: "
      << defaults.BinarySteps
      << ")\n"
+        "  --safety-tolerance E depth the safety-radius search may pass below the\n"
+        "                       surface unnoticed, 0 or more (default: 0, exact)\n"
         "  --no-shadows         turn self-shadowing off\n"
         "  --azimuth A          degrees around the view up, from the reset camera (default: "
      << defaults.Azimuth
@@ -213,6 +217,10 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
       } },
     { "--linear-steps", integerIn(options.LinearSteps, 1, 512) },
     { "--binary-steps", integerIn(options.BinarySteps, 0, 32) },
+    { "--safety-tolerance",
+      [&options](const std::string& value) {
+        return ParseNumber(value, options.SafetyTolerance) && options.SafetyTolerance >= 0.0;
+      } },
     { "--azimuth", number(options.Azimuth) },
     { "--elevation", number(options.Elevation) },
     { "--zoom", positive(options.Zoom) },
@@ -581,6 +589,7 @@ int main(int argc, char* argv[])
   mapper->SetSearchMethod(options.SearchMethod);
   mapper->SetLinearSteps(options.LinearSteps);
   mapper->SetBinarySteps(options.BinarySteps);
+  mapper->SetSafetyRadiusTolerance(options.SafetyTolerance);
   mapper->SetSelfShadowing(options.Shadows);
   if (options.SampleCount)
   {

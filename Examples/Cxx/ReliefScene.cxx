@@ -247,20 +247,27 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
   return mapper;
 }
 
+const std::vector<int>& SearchMethods()
+{
+  static const std::vector<int> methods = { vtkOpenGLReliefMapper::LINEAR,
+    vtkOpenGLReliefMapper::LINEAR_BINARY, vtkOpenGLReliefMapper::SECANT,
+    vtkOpenGLReliefMapper::EXACT_DDA, vtkOpenGLReliefMapper::SAFETY_RADIUS,
+    vtkOpenGLReliefMapper::CONE_STEP, vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
+  return methods;
+}
+
 void ShowSearchMethods(vtkRenderWindow* window, int width, int height)
 {
-  const int methods[] = { vtkOpenGLReliefMapper::LINEAR, vtkOpenGLReliefMapper::LINEAR_BINARY,
-    vtkOpenGLReliefMapper::SECANT, vtkOpenGLReliefMapper::EXACT_DDA,
-    vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
+  const std::vector<int>& methods = SearchMethods();
+  const double columns = static_cast<double>(methods.size());
   for (int row = 0; row < 2; ++row)
   {
-    for (int column = 0; column < 5; ++column)
+    for (size_t column = 0; column < methods.size(); ++column)
     {
       ShowThinFeatures(window, width, height, row == 0 ? 80.0 : 45.0, methods[column]);
       vtkRendererCollection* renderers = window->GetRenderers();
       vtkRenderer::SafeDownCast(renderers->GetItemAsObject(renderers->GetNumberOfItems() - 1))
-        ->SetViewport(
-        column / 5.0, row / 2.0, (column + 1) / 5.0, (row + 1) / 2.0);
+        ->SetViewport(column / columns, row / 2.0, (column + 1) / columns, (row + 1) / 2.0);
     }
   }
 }

@@ -70,8 +70,11 @@ vtkSmartPointer<vtkImageData> ThinFeatures();
 /// Thin features on a square seen `angle` degrees from its normal, searched by `method`.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
   vtkRenderWindow* window, int width, int height, double angle, int method);
-/// Thin features under Linear, LinearBinary, Secant, ExactDDA and MaximumMipmap (left
-/// to right), at 45 degrees (top) and 80 degrees (bottom).
+/// Every search method, from the cheapest to the exact ones: Linear, LinearBinary,
+/// Secant, ExactDDA, SafetyRadius, ConeStep, MaximumMipmap.
+const std::vector<int>& SearchMethods();
+/// Thin features under every search method (SearchMethods(), left to right), at 45
+/// degrees (top) and 80 degrees (bottom).
 void ShowSearchMethods(vtkRenderWindow* window, int width, int height);
 /// Cobblestones on a coarse torus.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height);

@@ -25,14 +25,14 @@
 #ifndef vtkMaximumMipmapFilter_h
 #define vtkMaximumMipmapFilter_h
 
-#include "vtkImageAlgorithm.h"
+#include "vtkReliefAccelerationFilter.h"
 #include "vtkReliefFiltersModule.h" // For export macro
 
-class VTKRELIEFFILTERS_EXPORT vtkMaximumMipmapFilter : public vtkImageAlgorithm
+class VTKRELIEFFILTERS_EXPORT vtkMaximumMipmapFilter : public vtkReliefAccelerationFilter
 {
 public:
   static vtkMaximumMipmapFilter* New();
-  vtkTypeMacro(vtkMaximumMipmapFilter, vtkImageAlgorithm);
+  vtkTypeMacro(vtkMaximumMipmapFilter, vtkReliefAccelerationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Number of levels above level 0 for a width x height map: floor(log2(max)).
@@ -44,6 +44,15 @@ public:
    */
   static bool GetLevelPlacement(int width, int height, int level, int origin[2], int size[2]);
 
+  /// Nodes along an axis of `size` cells at `level`: GL's mipmap size max(1, size >> level).
+  static int GetLevelSize(int size, int level);
+
+  /**
+   * The children of node `node` (along an axis of `size` cells) at the level below
+   * `level`: [first, last]. The last node of a row also takes the odd child at its end.
+   */
+  static void GetChildRange(int node, int size, int level, int& first, int& last);
+
   /// Size of the atlas holding the whole pyramid of a width x height map.
   static void GetAtlasSize(int width, int height, int size[2]);
 
@@ -51,12 +60,11 @@ protected:
   vtkMaximumMipmapFilter();
   ~vtkMaximumMipmapFilter() override = default;
 
-  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
-  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void GetOutputSize(int width, int height, int size[2]) override;
+  int GetOutputComponents() override { return 1; }
+  const char* GetProductName() override { return "a maximum mipmap"; }
+  const char* GetOutputName() override { return "MinimumDepth"; }
+  void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;
 
 private:
   vtkMaximumMipmapFilter(const vtkMaximumMipmapFilter&) = delete;

@@ -4,14 +4,15 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkConeStepMapFilter.h"
 #include "vtkOutputWindow.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkImageAlgorithm.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMaximumMipmapFilter.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
@@ -19,21 +20,23 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkMaximumMipmapFilter.h"
 #include "vtkProperty.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
+#include "vtkSafetyRadiusFilter.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include "vtkReliefCommon.h"
+#include "vtkReliefConeSearch.h"
 #include "vtkReliefFragmentDec.h"
 #include "vtkReliefFragmentImpl.h"
 #include "vtkReliefGeometryDec.h"
 #include "vtkReliefGeometryImpl.h"
 #include "vtkReliefGridSearch.h"
+#include "vtkReliefSafetySearch.h"
 #include "vtkReliefSearch.h"
 #include "vtkReliefSearchMethod.h"
 #include "vtkReliefVertexDec.h"
@@ -86,7 +89,10 @@ bool UploadFetchedTexture(
   vtkDataArray* values = image->GetPointData()->GetScalars();
   const int components = values->GetNumberOfComponents();
   texture->SetContext(window);
+  // both formats, every time: vtkTextureObject keeps the pixel format of an earlier
+  // upload, and one method's image would be read with another's layout
   texture->SetInternalFormat(components == 1 ? GL_R32F : GL_RG32F);
+  texture->SetFormat(components == 1 ? GL_RED : GL_RG);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   return texture->Create2DFromRaw(image->GetDimensions()[0], image->GetDimensions()[1],
@@ -187,6 +193,10 @@ const char* vtkOpenGLReliefMapper::GetSearchMethodAsString(int method)
       return "Secant";
     case EXACT_DDA:
       return "ExactDDA";
+    case SAFETY_RADIUS:
+      return "SafetyRadius";
+    case CONE_STEP:
+      return "ConeStep";
     case MAXIMUM_MIPMAP:
       return "MaximumMipmap";
     default:
@@ -209,6 +219,10 @@ std::string vtkOpenGLReliefMapper::GetSearchDefines()
       return "#define RELIEF_SEARCH_SECANT\n";
     case EXACT_DDA:
       return "#define RELIEF_SEARCH_EXACT_DDA\n";
+    case SAFETY_RADIUS:
+      return "#define RELIEF_SEARCH_SAFETY_RADIUS\n";
+    case CONE_STEP:
+      return "#define RELIEF_SEARCH_CONE_STEP\n";
     case MAXIMUM_MIPMAP:
       return "#define RELIEF_SEARCH_MAXIMUM_MIPMAP\n";
     default:
@@ -236,6 +250,18 @@ void vtkOpenGLReliefMapper::SetBinarySteps(int steps)
                                    << "]; using " << clamped << ".");
   }
   this->BinarySteps = clamped;
+}
+
+void vtkOpenGLReliefMapper::SetSafetyRadiusTolerance(double tolerance)
+{
+  if (!(tolerance >= 0.0))
+  {
+    vtkWarningMacro("SafetyRadiusTolerance " << tolerance
+                                             << " is not a depth (it must be 0 or more); using 0.");
+    tolerance = 0.0;
+  }
+  // read by the next render's acceleration update: nothing to rebuild here
+  this->SafetyRadiusTolerance = tolerance;
 }
 
 void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
@@ -417,7 +443,8 @@ namespace
 {
 bool NeedsAcceleration(int method)
 {
-  return method == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP;
+  return method == vtkOpenGLReliefMapper::SAFETY_RADIUS ||
+    method == vtkOpenGLReliefMapper::CONE_STEP || method == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP;
 }
 }
 
@@ -462,14 +489,33 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
   this->SetActiveSearchMethod(LINEAR_BINARY);
 }
 
+vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter()
+{
+  switch (this->SearchMethod)
+  {
+    case SAFETY_RADIUS:
+      return vtkSafetyRadiusFilter::New();
+    case CONE_STEP:
+      return vtkConeStepMapFilter::New();
+    default:
+      return vtkMaximumMipmapFilter::New();
+  }
+}
+
 vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
 {
-  // only the image the chosen method reads, rebuilt only when the relief texture changes
-  if (!vtkMaximumMipmapFilter::SafeDownCast(this->AccelerationFilter))
+  // only the image the chosen method reads, rebuilt only when its input or settings change
+  vtkSmartPointer<vtkReliefAccelerationFilter> wanted;
+  wanted.TakeReference(this->NewAccelerationFilter());
+  if (!this->AccelerationFilter || !this->AccelerationFilter->IsA(wanted->GetClassName()))
   {
-    this->AccelerationFilter = vtkSmartPointer<vtkMaximumMipmapFilter>::New();
+    this->AccelerationFilter = wanted;
     this->AccelerationFilter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
     this->AccelerationFilter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
+  }
+  if (auto* safety = vtkSafetyRadiusFilter::SafeDownCast(this->AccelerationFilter))
+  {
+    safety->SetErrorTolerance(this->SafetyRadiusTolerance);
   }
   this->AccelerationFilter->SetInputData(this->ReliefTextureFilter->GetOutput());
   this->AccelerationFilter->Update();
@@ -480,13 +526,25 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
 {
   int relief[3];
   this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
-  int expected[2];
-  vtkMaximumMipmapFilter::GetAtlasSize(relief[0], relief[1], expected);
+  int expected[2] = { relief[0], relief[1] };
+  int components = 1;
+  const char* filter = "vtkSafetyRadiusFilter";
+  if (this->SearchMethod == MAXIMUM_MIPMAP)
+  {
+    vtkMaximumMipmapFilter::GetAtlasSize(relief[0], relief[1], expected);
+    filter = "vtkMaximumMipmapFilter";
+  }
+  else if (this->SearchMethod == CONE_STEP)
+  {
+    components = 2;
+    filter = "vtkConeStepMapFilter";
+  }
   int dimensions[3];
   acceleration->GetDimensions(dimensions);
   vtkDataArray* values = acceleration->GetPointData()->GetScalars();
-  if (values && values->GetDataType() == VTK_FLOAT && values->GetNumberOfComponents() == 1 &&
-    dimensions[0] == expected[0] && dimensions[1] == expected[1] && dimensions[2] == 1)
+  if (values && values->GetDataType() == VTK_FLOAT &&
+    values->GetNumberOfComponents() == components && dimensions[0] == expected[0] &&
+    dimensions[1] == expected[1] && dimensions[2] == 1)
   {
     return true;
   }
@@ -495,9 +553,9 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
     << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
     << (values ? values->GetDataTypeAsString() : "nothing") << "; the "
     << this->GetSearchMethodAsString() << " search of this " << relief[0] << "x" << relief[1]
-    << " height map needs vtkMaximumMipmapFilter's output for it: " << expected[0] << "x"
-    << expected[1] << ", 1 component of float. Connect that filter's output, or none to let "
-    << "the mapper build it.");
+    << " height map needs " << filter << "'s output for it: " << expected[0] << "x"
+    << expected[1] << ", " << components << " component(s) of float. Connect that filter's "
+    << "output, or none to let the mapper build it.");
   return false;
 }
 
@@ -662,7 +720,8 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   std::string declarations = vtkReliefFragmentDec;
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
-    std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSearchMethod);
+    std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
+      vtkReliefConeSearch + vtkReliefSearchMethod);
   // VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit,
   // unless that slot carries the colour coordinates of scalars mapped through a texture.
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
@@ -767,6 +826,9 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   if (NeedsAcceleration(this->ActiveSearchMethod))
   {
     program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
+  }
+  if (this->ActiveSearchMethod == MAXIMUM_MIPMAP)
+  {
     int relief[3];
     this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
     float rows[32] = {};
@@ -843,6 +905,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Acceleration: " << this->GetAcceleration() << "\n";
   os << indent << "LinearSteps: " << this->LinearSteps << "\n";
   os << indent << "BinarySteps: " << this->BinarySteps << "\n";
+  os << indent << "SafetyRadiusTolerance: " << this->SafetyRadiusTolerance << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "SelfShadowing: " << this->SelfShadowing << "\n";
   os << indent << "DepthCorrection: " << this->DepthCorrection << "\n";

@@ -32,11 +32,11 @@
 #include "vtkSmartPointer.h" // for AccelerationFilter
 
 class vtkCallbackCommand;
-class vtkImageAlgorithm;
 class vtkImageData;
 class vtkMatrix3x3;
 class vtkReliefTangentFrameFilter;
 class vtkReliefTextureFilter;
+class vtkReliefAccelerationFilter;
 class vtkTextureObject;
 
 class VTKRELIEFRENDERING_EXPORT vtkOpenGLReliefMapper : public vtkOpenGLPolyDataMapper
@@ -52,6 +52,8 @@ public:
     LINEAR_BINARY = 1,
     SECANT = 2,
     EXACT_DDA = 3,
+    SAFETY_RADIUS = 4,
+    CONE_STEP = 5,
     MAXIMUM_MIPMAP = 6
   };
 
@@ -65,6 +67,14 @@ public:
    *   mapping, Tatarchuk 2006; 0 refinements is POM's single interpolation).
    * - ExactDDA: every texel cell the ray crosses, each intersected exactly with its
    *   bilinear patch (Baboud and Decoret 2006 s3.3). Exact; cost grows with the run.
+   * - SafetyRadius: jumps over squares of cells the ray cannot re-emerge from
+   *   (vtkSafetyRadiusFilter), bisects the bracket it finds, then intersects cells
+   *   exactly (Baboud and Decoret 2006 s3.4). Exact at SafetyRadiusTolerance 0; a
+   *   tolerance e > 0 buys larger jumps for features missed only where the ray passes
+   *   within e of their surface.
+   * - ConeStep: relaxed cone stepping (Policarpo and Oliveira 2007) with cones valid
+   *   for the bilinear field (vtkConeStepMapFilter), a binary refinement, then cells
+   *   intersected exactly. Exact.
    * - MaximumMipmap: skips blocks of cells the ray passes over, using a pyramid of
    *   highest points (Tevs et al. 2008), then intersects cells exactly. Exact; about
    *   log n steps.
@@ -77,6 +87,8 @@ public:
   void SetSearchMethodToLinearBinary() { this->SetSearchMethod(LINEAR_BINARY); }
   void SetSearchMethodToSecant() { this->SetSearchMethod(SECANT); }
   void SetSearchMethodToExactDDA() { this->SetSearchMethod(EXACT_DDA); }
+  void SetSearchMethodToSafetyRadius() { this->SetSearchMethod(SAFETY_RADIUS); }
+  void SetSearchMethodToConeStep() { this->SetSearchMethod(CONE_STEP); }
   void SetSearchMethodToMaximumMipmap() { this->SetSearchMethod(MAXIMUM_MIPMAP); }
   const char* GetSearchMethodAsString();
   static const char* GetSearchMethodAsString(int method);
@@ -90,14 +102,26 @@ public:
 
   ///@{
   /**
-   * A precomputed acceleration image for the search method (optional port 2): the
-   * output of vtkMaximumMipmapFilter for MaximumMipmap, made from the same height map.
+   * A precomputed acceleration image for the search method (optional port 2), made
+   * from the same height map: the output of vtkSafetyRadiusFilter for SafetyRadius,
+   * vtkConeStepMapFilter for ConeStep, vtkMaximumMipmapFilter for MaximumMipmap.
    * Without one the mapper builds what its method needs. An image that does not fit
    * the method or the map is reported, and the search falls back to LinearBinary.
    */
   void SetAccelerationConnection(vtkAlgorithmOutput* output);
   void SetAccelerationData(vtkImageData* image);
   vtkImageData* GetAcceleration();
+  ///@}
+
+  ///@{
+  /**
+   * The error tolerance e of the safety radii the mapper builds for SafetyRadius (see
+   * vtkSafetyRadiusFilter), in units of relief depth: 0 (default) is exact; e > 0 lets
+   * the search step over the ray where it is at most e below the field. Negative values
+   * become 0, with a warning. A precomputed acceleration image carries its own e.
+   */
+  void SetSafetyRadiusTolerance(double tolerance);
+  vtkGetMacro(SafetyRadiusTolerance, double);
   ///@}
 
   ///@{
@@ -189,6 +213,7 @@ protected:
   bool UpdateReliefTexture(vtkRenderer* ren);
   void UpdateAcceleration(vtkRenderer* ren);
   vtkImageData* ComputeAcceleration();
+  vtkReliefAccelerationFilter* NewAccelerationFilter();
   bool CheckAcceleration(vtkImageData* acceleration);
   bool UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration);
   void SetActiveSearchMethod(int method);
@@ -203,6 +228,7 @@ protected:
   int SearchMethod = LINEAR_BINARY;
   int LinearSteps = 10;
   int BinarySteps = 5;
+  double SafetyRadiusTolerance = 0.0;
   double DepthScale = 0.05;
   bool SelfShadowing = true;
   bool DepthCorrection = true;
@@ -214,7 +240,7 @@ protected:
   vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth) in half floats, for normals
   vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
   vtkNew<vtkTextureObject> AccelerationTexture; // what the search method needs besides
-  vtkSmartPointer<vtkImageAlgorithm> AccelerationFilter; // builds it, for SearchMethod
+  vtkSmartPointer<vtkReliefAccelerationFilter> AccelerationFilter; // builds it, for SearchMethod
   vtkTimeStamp AccelerationUploadTime;
   vtkImageData* UploadedAcceleration = nullptr; // compared by address only
   int ActiveSearchMethod = LINEAR_BINARY; // SearchMethod, or its fallback

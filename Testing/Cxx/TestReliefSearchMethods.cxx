@@ -5,6 +5,7 @@
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 
+#include "vtkConeStepMapFilter.h"
 #include "vtkImageData.h"
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -19,10 +20,6 @@
 
 namespace
 {
-const int Methods[] = { vtkOpenGLReliefMapper::LINEAR, vtkOpenGLReliefMapper::LINEAR_BINARY,
-  vtkOpenGLReliefMapper::SECANT, vtkOpenGLReliefMapper::EXACT_DDA,
-  vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
-
 // GL objects alive in the window's context, counted by name.
 int LivePrograms()
 {
@@ -42,6 +39,21 @@ int LiveTextures()
     count += glIsTexture(name) ? 1 : 0;
   }
   return count;
+}
+
+// Sum of the red channel after a render: the sample counts in SampleCount display mode.
+long RedSum(vtkRenderWindow* window)
+{
+  window->Render();
+  const int* size = window->GetSize();
+  unsigned char* pixels = window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 1);
+  long sum = 0;
+  for (int k = 0; k < size[0] * size[1]; ++k)
+  {
+    sum += pixels[3 * k];
+  }
+  delete[] pixels;
+  return sum;
 }
 }
 
@@ -63,10 +75,13 @@ int TestReliefSearchMethods(int, char*[])
   mapper->AddObserver(vtkCommand::WarningEvent, messages);
 
   // names
-  const char* names[] = { "Linear", "LinearBinary", "Secant", "ExactDDA", "MaximumMipmap" };
-  for (int k = 0; k < 5; ++k)
+  const std::vector<int>& methods = ReliefScene::SearchMethods();
+  const char* names[] = { "Linear", "LinearBinary", "Secant", "ExactDDA", "SafetyRadius",
+    "ConeStep", "MaximumMipmap" };
+  check(methods.size() == std::size(names), "every method is listed");
+  for (size_t k = 0; k < methods.size(); ++k)
   {
-    mapper->SetSearchMethod(Methods[k]);
+    mapper->SetSearchMethod(methods[k]);
     check(std::strcmp(mapper->GetSearchMethodAsString(), names[k]) == 0, "method names");
   }
   mapper->SetSearchMethod(42);
@@ -77,7 +92,7 @@ int TestReliefSearchMethods(int, char*[])
 
   // leaks: after one round of every method, more rounds create no GL objects
   window->Render();
-  for (int method : Methods)
+  for (int method : methods)
   {
     mapper->SetSearchMethod(method);
     window->Render();
@@ -87,7 +102,7 @@ int TestReliefSearchMethods(int, char*[])
   const int textures = LiveTextures();
   for (int round = 0; round < 10; ++round)
   {
-    for (int method : Methods)
+    for (int method : methods)
     {
       mapper->SetSearchMethod(method);
       window->Render();
@@ -98,6 +113,27 @@ int TestReliefSearchMethods(int, char*[])
   check(LivePrograms() == programs, "switching methods leaks no shader programs");
   check(LiveTextures() == textures, "switching methods leaks no textures");
   check(messages->Events.empty(), "switching methods is silent");
+
+  // nothing of one method's state leaks into the next: after all the switching, each
+  // method takes, pixel for pixel, the samples a mapper that never searched otherwise
+  // takes (an acceleration texture re-uploaded in the previous method's pixel format
+  // once left ConeStep reading zero-width cones: exact, but stepping cell by cell)
+  mapper->SetDisplayModeToSampleCount();
+  for (int method : methods)
+  {
+    vtkNew<vtkRenderWindow> alone;
+    ReliefScene::ShowThinFeatures(alone, 160, 120, 60.0, method)->SetDisplayModeToSampleCount();
+    mapper->SetSearchMethod(method);
+    const long expected = RedSum(alone);
+    const long actual = RedSum(window);
+    if (actual != expected)
+    {
+      std::cerr << vtkOpenGLReliefMapper::GetSearchMethodAsString(method) << ": red sum "
+                << actual << " after switching, " << expected << " alone\n";
+    }
+    check(actual == expected, "each method samples as it does alone");
+  }
+  mapper->SetDisplayModeToShaded();
 
   // a precomputed pyramid is used as it is; one of the wrong size makes LinearBinary search
   mapper->SetSearchMethodToMaximumMipmap();
@@ -134,6 +170,50 @@ int TestReliefSearchMethods(int, char*[])
   window->Render();
   check(mapper->GetActiveSearchMethod() == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP,
     "without a given pyramid the mapper builds its own");
+  messages->Clear();
+
+  // the cone map has two components: one of one is refused, naming the filter
+  mapper->SetSearchMethodToConeStep();
+  vtkNew<vtkImageData> oneComponent;
+  oneComponent->SetDimensions(64, 64, 1);
+  oneComponent->AllocateScalars(VTK_FLOAT, 1);
+  mapper->SetAccelerationData(oneComponent);
+  window->Render();
+  check(messages->Count(vtkCommand::ErrorEvent) == 1 &&
+      messages->AnyMessageContains("vtkConeStepMapFilter") &&
+      messages->AnyMessageContains("2 component(s)") &&
+      mapper->GetActiveSearchMethod() == vtkOpenGLReliefMapper::LINEAR_BINARY,
+    "a one-component cone map is an error naming the filter, and LinearBinary searches");
+  messages->Clear();
+  vtkNew<vtkConeStepMapFilter> cones;
+  cones->SetInputConnection(mapper->GetReliefTextureFilter()->GetOutputPort());
+  mapper->SetAccelerationConnection(cones->GetOutputPort());
+  window->Render();
+  check(messages->Events.empty() &&
+      mapper->GetActiveSearchMethod() == vtkOpenGLReliefMapper::CONE_STEP,
+    "a precomputed cone map is accepted");
+  mapper->SetAccelerationConnection(nullptr);
+
+  // a negative safety tolerance is clamped to 0 with one warning; a new tolerance
+  // rebuilds the radii without a message
+  mapper->SetSearchMethodToSafetyRadius();
+  mapper->SetSafetyRadiusTolerance(-0.5);
+  check(messages->Count(vtkCommand::WarningEvent) == 1 &&
+      messages->AnyMessageContains("SafetyRadiusTolerance") &&
+      mapper->GetSafetyRadiusTolerance() == 0.0,
+    "a negative safety tolerance becomes 0 with a warning");
+  messages->Clear();
+  mapper->SetDisplayModeToSampleCount();
+  const long exactSamples = RedSum(window);
+  mapper->SetSafetyRadiusTolerance(0.05);
+  const long tolerantSamples = RedSum(window);
+  std::cout << "SafetyRadius samples (red sum): e = 0 " << exactSamples << ", e = 0.05 "
+            << tolerantSamples << "\n";
+  check(messages->Events.empty() &&
+      mapper->GetActiveSearchMethod() == vtkOpenGLReliefMapper::SAFETY_RADIUS &&
+      tolerantSamples < exactSamples,
+    "a new safety tolerance rebuilds the radii, and larger radii take fewer samples");
+  mapper->SetDisplayModeToShaded();
   messages->Clear();
 
   // a height map wider than OpenGL takes

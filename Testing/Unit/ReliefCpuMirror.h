@@ -79,9 +79,30 @@ struct DepthPyramid
   }
 };
 
-/// The field and pyramid the shader code reads; set them before calling a search.
+/// A value per cell as the acceleration filters write them, repeating like the texture:
+/// vtkConeStepMapFilter's (top depth, cone ratio), vtkSafetyRadiusFilter's radius.
+template <typename Value>
+struct CellMap
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<Value> Values; // row j = 0 first
+
+  Value At(vec2 cell) const
+  {
+    const int i = ((static_cast<int>(cell.x) % this->Width) + this->Width) % this->Width;
+    const int j = ((static_cast<int>(cell.y) % this->Height) + this->Height) % this->Height;
+    return this->Values[static_cast<size_t>(j) * this->Width + i];
+  }
+};
+using ConeStepMap = CellMap<vec2>;
+using SafetyRadiusMap = CellMap<float>;
+
+/// The field and the acceleration maps the shader code reads; set them before a search.
 inline const DepthField* CurrentField = nullptr;
 inline const DepthPyramid* CurrentPyramid = nullptr;
+inline const ConeStepMap* CurrentConeMap = nullptr;
+inline const SafetyRadiusMap* CurrentRadii = nullptr;
 
 inline float SampleCurrentField(vec2 uv)
 {
@@ -101,12 +122,16 @@ inline vec4 CellDepths(vec2 cell)
 #define RELIEF_CELL_DEPTHS(cell) ReliefCpuMirror::CellDepths(cell)
 #define RELIEF_PYRAMID_DEPTH(node, level) CurrentPyramid->At(node, level)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
+#define RELIEF_CONE_STEP(cell) CurrentConeMap->At(cell)
+#define RELIEF_SAFETY_RADIUS(cell) CurrentRadii->At(cell)
 // shader functions are not inline: one copy per test source
 namespace
 {
 #include "vtkReliefCommon.glsl"
 #include "vtkReliefSearch.glsl"
 #include "vtkReliefGridSearch.glsl"
+#include "vtkReliefSafetySearch.glsl"
+#include "vtkReliefConeSearch.glsl"
 #include "vtkReliefSearchMethod.glsl"
 }
 #undef RELIEF_DEPTH
@@ -114,6 +139,8 @@ namespace
 #undef RELIEF_CELL_DEPTHS
 #undef RELIEF_PYRAMID_DEPTH
 #undef RELIEF_PYRAMID_TOP
+#undef RELIEF_CONE_STEP
+#undef RELIEF_SAFETY_RADIUS
 }
 
 #endif

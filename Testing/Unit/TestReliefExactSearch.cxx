@@ -68,6 +68,14 @@ TEST_F(ReliefExactSearch, MaximumMipmapMatchesTheReferenceEverywhere)
     [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray); });
 }
 
+TEST_F(ReliefExactSearch, ExactSearchesKeepTheirHitsOnGrazingRaysThousandsOfCellsLong)
+{
+  ExpectGrazingHits(
+    *AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray); });
+  ExpectGrazingHits(*AllScenes, "MaximumMipmap",
+    [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray); });
+}
+
 TEST_F(ReliefExactSearch, MaximumMipmapTakesFewerSamplesThanExactDDAAtGrazingAngles)
 {
   Use((*AllScenes)[5]); // the terrain

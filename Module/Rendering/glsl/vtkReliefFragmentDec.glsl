@@ -64,6 +64,12 @@ uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
 #define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefAccelerationTexture, \
   ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0).r
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
+// vtkSafetyRadiusFilter's radius and vtkConeStepMapFilter's (top, ratio) of a cell,
+// one texel per cell, repeating with the texture
+#define RELIEF_SAFETY_RADIUS(cell) \
+  texelFetch(reliefAccelerationTexture, ivec2(mod(cell, reliefTextureSize)), 0).r
+#define RELIEF_CONE_STEP(cell) \
+  texelFetch(reliefAccelerationTexture, ivec2(mod(cell, reliefTextureSize)), 0).rg
 
 //VTK::Relief::Common
 //VTK::Relief::Search

@@ -96,12 +96,14 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
 {
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
   vec2 cell = floor(reliefGridAt(grid, tStart));
-  vec2 nextBounds = vec2(cell.x + max(signs.x, 0.0f), cell.y + max(signs.y, 0.0f));
-  vec2 next = reliefCrossings(grid, nextBounds, signs, inverseRun);
   float tIn = tStart;
   for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
   {
+    // from the cell's own sides each time: summing steps drifts by a cell on rays
+    // thousands of cells long, and the patch would be tested where the ray is not
+    vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
     float tOut = max(min(min(next.x, next.y), tEnd), tIn);
     samples += 1;
     float t = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), tIn, tOut);
@@ -116,16 +118,59 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
     if (next.x < next.y)
     {
       cell.x += signs.x;
-      next.x += inverseRun.x;
     }
     else
     {
       cell.y += signs.y;
-      next.y += inverseRun.y;
     }
     tIn = tOut;
   }
   return reliefGridHit(ray, grid, tEnd, false, samples);
+}
+
+// Field depth minus ray depth at t, from the cell under the ray: the polynomial that
+// reliefCellIntersection solves, so that both agree on which side the ray is (a
+// filtered read may round the other way).
+float reliefCellGap(ReliefGridRay grid, float t)
+{
+  vec2 at = reliefGridAt(grid, t);
+  vec2 cell = floor(at);
+  vec4 depths = RELIEF_CELL_DEPTHS(cell);
+  float x = at.x - cell.x;
+  float y = at.y - cell.y;
+  float b = depths.y - depths.x;
+  float c = depths.z - depths.x;
+  float e = depths.w - depths.y - depths.z + depths.x;
+  return depths.x + b * x + c * y + e * x * y - (grid.depth + t * grid.descent);
+}
+
+// Brackets of at most this many cells (along the ray's major axis) are walked exactly;
+// longer ones are halved first.
+#define RELIEF_WALK_CELLS 2.0f
+
+// The crossing in [above, below] of a ray above the field at `above`, on or below it at
+// `below`, that enters the field once between (the bracket a safety radius or a cone
+// gives): bisection down to RELIEF_WALK_CELLS cells, then an exact walk. `samples`
+// counts on from the caller's.
+ReliefHit reliefRefineCrossing(ReliefRay ray, ReliefGridRay grid, float above, float below, int samples)
+{
+  float cellsPerT = max(abs(grid.direction.x), abs(grid.direction.y));
+  for (int i = 0; i < 64 && (below - above) * cellsPerT > RELIEF_WALK_CELLS; ++i)
+  {
+    float middle = 0.5f * (above + below);
+    samples += 1;
+    if (reliefCellGap(grid, middle) <= 0.0f)
+    {
+      below = middle;
+    }
+    else
+    {
+      above = middle;
+    }
+  }
+  ReliefHit walk = reliefWalkCells(ray, grid, above, below, samples);
+  // the walk's own rounding may put the crossing a hair past `below`
+  return walk.hit ? walk : reliefGridHit(ray, grid, below, true, walk.samples);
 }
 
 // The end of a search that met nothing before t = 1: a view ray is as deep as the deepest

@@ -8,6 +8,10 @@ ReliefHit reliefSearch(ReliefRay ray, int linearSteps, int binarySteps)
   return reliefSearchSecant(ray, linearSteps, binarySteps);
 #elif defined(RELIEF_SEARCH_EXACT_DDA)
   return reliefSearchExactDDA(ray);
+#elif defined(RELIEF_SEARCH_SAFETY_RADIUS)
+  return reliefSearchSafetyRadius(ray);
+#elif defined(RELIEF_SEARCH_CONE_STEP)
+  return reliefSearchConeStep(ray);
 #elif defined(RELIEF_SEARCH_MAXIMUM_MIPMAP)
   return reliefSearchMaximumMipmap(ray);
 #else

@@ -1,0 +1,90 @@
+// vtkRelief: the ConeStep search, relaxed cone stepping (Policarpo and Oliveira, GPU Gems
+// 3 ch. 18) over the cone map of vtkConeStepMapFilter, whose cones hold for the bilinear
+// field (see that class for the definition and the proof). Shared with the CPU mirror;
+// see vtkReliefCommon.glsl for the rules. Needs vtkReliefSearch.glsl and
+// vtkReliefGridSearch.glsl, and RELIEF_CONE_STEP(cell): vec2 (top depth, cone ratio in
+// texels per unit depth) of a cell, its index unwrapped (the includer repeats it).
+//
+// Standing over a cell above its top, the ray may travel inside the cell's cone; it
+// stays above the field there or enters it once. So each step goes to where the ray
+// leaves the cone, reading only the cone map while it lands above the next cell's top.
+// A step that lands lower is checked against that cell's patch: if it ended on or below
+// the field it brackets the first intersection, which bisection narrows and an exact
+// walk over the last few cells finds. Where the cone would not carry the ray out of its cell (the ray below the
+// cell's top, or the cone too narrow), the cell is intersected exactly instead, so the
+// ray never crawls toward a surface it is about to meet.
+//
+// Bound: the hit is the first intersection with the bilinear field, exactly as
+// ExactDDA's (up to float rounding): the binary refinement only narrows the bracket
+// that the exact walk finishes.
+
+ReliefHit reliefSearchConeStep(ReliefRay ray)
+{
+  ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  float run = length(grid.direction); // texels travelled per unit t
+  vec2 cell = floor(grid.origin);
+  float t = 0.0f;
+  float stepStart = -1.0f; // where the cone step that led to t began; -1: none did
+  int samples = 0;
+  for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
+  {
+    float depth = grid.depth + t * grid.descent;
+    vec2 exits = reliefCrossings(
+      grid, vec2(cell.x + max(signs.x, 0.0f), cell.y + max(signs.y, 0.0f)), signs, inverseRun);
+    float tCell = min(exits.x, exits.y);
+    vec2 cone = RELIEF_CONE_STEP(cell);
+    samples += 1;
+    // the ray leaves the cone where the distance it ran equals ratio * (top - depth)
+    float tCone = t + cone.y * (cone.x - depth) / (run + cone.y * grid.descent);
+    if (depth < cone.x && tCone > tCell && tCell > t)
+    {
+      // above the cell's top, so above the field: the step that led here crossed
+      // nothing, and the next one goes as far as the cone reaches
+      if (tCone >= 1.0f)
+      {
+        samples += 1;
+        if (reliefCellGap(grid, 1.0f) <= 0.0f)
+        {
+          return reliefRefineCrossing(ray, grid, t, 1.0f, samples);
+        }
+        break;
+      }
+      stepStart = t;
+      t = tCone;
+      cell = floor(reliefGridAt(grid, t));
+    }
+    else
+    {
+      samples += 1;
+      float tOut = min(tCell, 1.0f);
+      float tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, max(tOut, t));
+      if (tHit >= 0.0f)
+      {
+        // on or below the field where a cone step ended: it entered the field once,
+        // somewhere in that step
+        return tHit <= t && stepStart >= 0.0f
+          ? reliefRefineCrossing(ray, grid, stepStart, t, samples)
+          : reliefGridHit(ray, grid, tHit, true, samples);
+      }
+      if (tCell >= 1.0f)
+      {
+        break;
+      }
+      // on to the next cell by the side the ray leaves through, so rounding at its
+      // border cannot send the search back into this cell
+      stepStart = -1.0f;
+      t = max(t, tCell);
+      if (exits.x < exits.y)
+      {
+        cell.x += signs.x;
+      }
+      else
+      {
+        cell.y += signs.y;
+      }
+    }
+  }
+  return reliefGridEnd(ray, grid, samples);
+}

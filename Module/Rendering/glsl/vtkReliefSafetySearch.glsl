@@ -1,0 +1,64 @@
+// vtkRelief: SafetyRadius, the robust binary search of seed 002 s3.4 (Baboud and Decoret
+// 2006). Cell c stores a radius n (vtkSafetyRadiusFilter): a ray on or above the field
+// at a point over c, once more than e below the field, is nowhere above it again before
+// it leaves the square of cells within n of c. So the search jumps from square exit to
+// square exit while the ray stays above. An exit found below brackets a crossing (the
+// only one when e = 0): bisection, reading the exact patch, narrows the bracket to a
+// few cells and an exact cell walk finishes it. Radius 0 promises nothing (seed 002 Fig. 7):
+// that cell alone is intersected exactly, and the search goes on from its exit. With
+// e = 0 the hit is exact; with e > 0 the search steps over the ray only where it is at
+// most e below the field, so it returns a true hit, at or after the first one and no
+// later than where the ray is first more than e below the field.
+// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
+// RELIEF_SAFETY_RADIUS(cell): the radius of a cell (unwrapped index; the includer
+// repeats it), in cells.
+
+// The cell the ray enters at t: on a cell border the one ahead, so a jump that ends on
+// a square's side starts the next square beyond it, and the search always advances.
+vec2 reliefCellAfter(ReliefGridRay grid, float t, vec2 signs, vec2 inverseRun)
+{
+  vec2 at = reliefGridAt(grid, t);
+  vec2 cell = vec2(signs.x > 0.0f ? floor(at.x) : ceil(at.x) - 1.0f,
+    signs.y > 0.0f ? floor(at.y) : ceil(at.y) - 1.0f);
+  // rounding can leave `at` short of a border the ray has already crossed at t
+  vec2 exits = reliefCrossings(
+    grid, vec2(cell.x + max(signs.x, 0.0f), cell.y + max(signs.y, 0.0f)), signs, inverseRun);
+  cell.x += exits.x <= t ? signs.x : 0.0f;
+  cell.y += exits.y <= t ? signs.y : 0.0f;
+  return cell;
+}
+
+ReliefHit reliefSearchSafetyRadius(ReliefRay ray)
+{
+  ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  float t = 0.0f;
+  int samples = 0;
+  for (int i = 0; i < RELIEF_MAX_ITERATIONS && t < 1.0f; ++i)
+  {
+    vec2 cell = reliefCellAfter(grid, t, signs, inverseRun);
+    float radius = RELIEF_SAFETY_RADIUS(cell);
+    samples += 1;
+    vec2 square = vec2(signs.x > 0.0f ? cell.x + radius + 1.0f : cell.x - radius,
+      signs.y > 0.0f ? cell.y + radius + 1.0f : cell.y - radius);
+    vec2 exits = reliefCrossings(grid, square, signs, inverseRun);
+    float tExit = min(min(exits.x, exits.y), 1.0f);
+    samples += 1;
+    if (radius < 0.5f)
+    {
+      float tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, tExit);
+      if (tHit >= 0.0f)
+      {
+        return reliefGridHit(ray, grid, tHit, true, samples);
+      }
+    }
+    else if (reliefCellGap(grid, tExit) <= 0.0f)
+    {
+      // the only crossing (e = 0) lies in [t, tExit]
+      return reliefRefineCrossing(ray, grid, t, tExit, samples);
+    }
+    t = tExit;
+  }
+  return reliefGridEnd(ray, grid, samples);
+}

@@ -1,0 +1,121 @@
+// What the CPU mirror reads (ReliefCpuMirror.h), made by the very filters whose output
+// the mapper uploads: the depth field, the maximum mipmap, the cone map and the safety
+// radii. Shared by the unit tests and the GPU-against-CPU regression test.
+#ifndef ReliefMirrorMaps_h
+#define ReliefMirrorMaps_h
+
+#include "ReliefCpuMirror.h"
+#include "vtkConeStepMapFilter.h"
+#include "vtkMaximumMipmapFilter.h"
+#include "vtkSafetyRadiusFilter.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace ReliefCpuMirror
+{
+/// The depths of a relief texture (depth in the last of four components) or of a
+/// one-component depth image, as the mapper uploads them.
+inline DepthField FieldOf(vtkImageData* image)
+{
+  DepthField field;
+  field.Width = image->GetDimensions()[0];
+  field.Height = image->GetDimensions()[1];
+  vtkDataArray* texels = image->GetPointData()->GetScalars();
+  const int depth = texels->GetNumberOfComponents() - 1;
+  for (vtkIdType k = 0; k < texels->GetNumberOfTuples(); ++k)
+  {
+    field.Depths.push_back(static_cast<float>(texels->GetComponent(k, depth)));
+  }
+  return field;
+}
+
+/// A one-component depth image of the field, the input the acceleration filters take.
+inline vtkSmartPointer<vtkImageData> DepthImage(const DepthField& field)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(field.Width, field.Height, 1);
+  vtkNew<vtkFloatArray> depths;
+  depths->SetNumberOfTuples(static_cast<vtkIdType>(field.Depths.size()));
+  std::copy(field.Depths.begin(), field.Depths.end(), depths->GetPointer(0));
+  image->GetPointData()->SetScalars(depths);
+  return image;
+}
+
+/// The output of an acceleration filter run on the field.
+inline vtkSmartPointer<vtkImageData> Accelerate(vtkReliefAccelerationFilter* filter, const DepthField& field)
+{
+  filter->SetInputData(DepthImage(field));
+  filter->Update();
+  return filter->GetOutput();
+}
+
+/// vtkMaximumMipmapFilter's pyramid of the field, level by level.
+inline DepthPyramid PyramidOf(const DepthField& field)
+{
+  vtkNew<vtkMaximumMipmapFilter> filter;
+  vtkImageData* atlas = Accelerate(filter, field);
+  const int atlasWidth = atlas->GetDimensions()[0];
+  const float* values =
+    vtkFloatArray::SafeDownCast(atlas->GetPointData()->GetScalars())->GetPointer(0);
+  DepthPyramid pyramid;
+  int origin[2];
+  int size[2];
+  for (int level = 0;
+       vtkMaximumMipmapFilter::GetLevelPlacement(field.Width, field.Height, level, origin, size);
+       ++level)
+  {
+    pyramid.Widths.push_back(size[0]);
+    pyramid.Heights.push_back(size[1]);
+    std::vector<float> nodes;
+    for (int j = 0; j < size[1]; ++j)
+    {
+      const float* row = values + static_cast<size_t>(origin[1] + j) * atlasWidth + origin[0];
+      nodes.insert(nodes.end(), row, row + size[0]);
+    }
+    pyramid.Levels.push_back(nodes);
+  }
+  return pyramid;
+}
+
+/// A per-cell map from an acceleration filter's output of the field's size.
+template <typename Value>
+CellMap<Value> CellMapOf(vtkImageData* image)
+{
+  static_assert(sizeof(Value) % sizeof(float) == 0, "a cell's value is whole floats");
+  CellMap<Value> map;
+  map.Width = image->GetDimensions()[0];
+  map.Height = image->GetDimensions()[1];
+  const float* values =
+    vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars())->GetPointer(0);
+  const size_t cells = static_cast<size_t>(map.Width) * map.Height;
+  map.Values.resize(cells);
+  std::copy(values, values + cells * sizeof(Value) / sizeof(float),
+    reinterpret_cast<float*>(map.Values.data()));
+  return map;
+}
+
+/// vtkConeStepMapFilter's (top, ratio) per cell of the field.
+inline ConeStepMap ConeMapOf(const DepthField& field)
+{
+  vtkNew<vtkConeStepMapFilter> filter;
+  return CellMapOf<vec2>(Accelerate(filter, field));
+}
+
+/// vtkSafetyRadiusFilter's radius per cell of the field, at error tolerance e.
+inline SafetyRadiusMap RadiiOf(const DepthField& field, double tolerance, int maximum = 32)
+{
+  vtkNew<vtkSafetyRadiusFilter> filter;
+  filter->SetErrorTolerance(tolerance);
+  filter->SetMaximumRadius(maximum);
+  return CellMapOf<float>(Accelerate(filter, field));
+}
+}
+
+#endif
