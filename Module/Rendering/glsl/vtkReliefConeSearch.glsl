@@ -24,66 +24,104 @@ ReliefHit reliefSearchConeStep(ReliefRay ray)
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
   float run = length(grid.direction); // texels travelled per unit t
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
   vec2 cell = floor(grid.origin);
   float t = 0.0f;
   float stepStart = -1.0f; // where the cone step that led to t began; -1: none did
   int samples = 0;
   for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
   {
-    float depth = grid.depth + t * grid.descent;
-    vec2 exits = reliefCrossings(
-      grid, vec2(cell.x + max(signs.x, 0.0f), cell.y + max(signs.y, 0.0f)), signs, inverseRun);
-    float tCell = min(exits.x, exits.y);
-    vec2 cone = RELIEF_CONE_STEP(cell);
-    samples += 1;
-    // the ray leaves the cone where the distance it ran equals ratio * (top - depth)
-    float tCone = t + cone.y * (cone.x - depth) / (run + cone.y * grid.descent);
-    if (depth < cone.x && tCone > tCell && tCell > t)
+    // steps that read the cone map alone: along the cone while it carries the ray out of
+    // its cell, or over a cell whose top the ray stays above. A loop of its own, so that
+    // fragments processed together (SIMD lanes, GPU warps) step together and the exact
+    // cell test below runs only when one of them needs it.
+    bool toTheEnd = false;
+    bool missed = false;
+    vec2 exits = vec2(0.0f, 0.0f);
+    float tCell = 0.0f;
+    for (; i < RELIEF_MAX_ITERATIONS; ++i)
     {
-      // above the cell's top, so above the field: the step that led here crossed
-      // nothing, and the next one goes as far as the cone reaches
-      if (tCone >= 1.0f)
-      {
-        samples += 1;
-        if (reliefCellGap(grid, 1.0f) <= 0.0f)
-        {
-          return reliefRefineCrossing(ray, grid, t, 1.0f, samples);
-        }
-        break;
-      }
-      stepStart = t;
-      t = tCone;
-      cell = floor(reliefGridAt(grid, t));
-    }
-    else
-    {
+      float depth = grid.depth + t * grid.descent;
+      exits = reliefCrossings(grid, cell + ahead, signs, inverseRun);
+      tCell = min(exits.x, exits.y);
+      vec2 cone = RELIEF_CONE_STEP(cell);
       samples += 1;
-      float tOut = min(tCell, 1.0f);
-      float tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, max(tOut, t));
-      if (tHit >= 0.0f)
+      // the ray leaves the cone where the distance it ran equals ratio * (top - depth)
+      float tCone = t + cone.y * (cone.x - depth) / (run + cone.y * grid.descent);
+      // above the cell's top, so above the field: the step that led here crossed nothing
+      bool above = depth < cone.x && tCell > t;
+      if (above && tCone > tCell)
       {
-        // on or below the field where a cone step ended: it entered the field once,
-        // somewhere in that step
-        return tHit <= t && stepStart >= 0.0f
-          ? reliefRefineCrossing(ray, grid, stepStart, t, samples)
-          : reliefGridHit(ray, grid, tHit, true, samples);
+        if (tCone >= 1.0f)
+        {
+          toTheEnd = true;
+          break;
+        }
+        stepStart = t;
+        t = tCone;
+        cell = floor(reliefGridAt(grid, t));
       }
-      if (tCell >= 1.0f)
+      else if (above && grid.depth + tCell * grid.descent < cone.x)
       {
-        break;
-      }
-      // on to the next cell by the side the ray leaves through, so rounding at its
-      // border cannot send the search back into this cell
-      stepStart = -1.0f;
-      t = max(t, tCell);
-      if (exits.x < exits.y)
-      {
-        cell.x += signs.x;
+        // still above the top where the ray leaves the cell: nothing to meet in it
+        if (tCell >= 1.0f)
+        {
+          missed = true;
+          break;
+        }
+        stepStart = -1.0f;
+        t = tCell;
+        if (exits.x < exits.y)
+        {
+          cell.x += signs.x;
+        }
+        else
+        {
+          cell.y += signs.y;
+        }
       }
       else
       {
-        cell.y += signs.y;
+        break;
       }
+    }
+    if (missed)
+    {
+      break;
+    }
+    if (toTheEnd)
+    {
+      samples += 1;
+      return reliefCellGap(grid, 1.0f) <= 0.0f ? reliefRefineCrossing(ray, grid, t, 1.0f, samples)
+                                               : reliefGridEnd(ray, grid, samples);
+    }
+    // the ray reaches the cell's top inside the cell: the cell exactly
+    samples += 1;
+    float tOut = min(tCell, 1.0f);
+    float tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, max(tOut, t));
+    if (tHit >= 0.0f)
+    {
+      // on or below the field where a cone step ended: it entered the field once,
+      // somewhere in that step
+      return tHit <= t && stepStart >= 0.0f
+        ? reliefRefineCrossing(ray, grid, stepStart, t, samples)
+        : reliefGridHit(ray, grid, tHit, true, samples);
+    }
+    if (tCell >= 1.0f)
+    {
+      break;
+    }
+    // on to the next cell by the side the ray leaves through, so rounding at its border
+    // cannot send the search back into this cell
+    stepStart = -1.0f;
+    t = max(t, tCell);
+    if (exits.x < exits.y)
+    {
+      cell.x += signs.x;
+    }
+    else
+    {
+      cell.y += signs.y;
     }
   }
   return reliefGridEnd(ray, grid, samples);
