@@ -446,6 +446,20 @@ bool NeedsAcceleration(int method)
   return method == vtkOpenGLReliefMapper::SAFETY_RADIUS ||
     method == vtkOpenGLReliefMapper::CONE_STEP || method == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP;
 }
+
+// The filter whose output a method that needs acceleration reads.
+const char* AccelerationFilterName(int method)
+{
+  switch (method)
+  {
+    case vtkOpenGLReliefMapper::SAFETY_RADIUS:
+      return "vtkSafetyRadiusFilter";
+    case vtkOpenGLReliefMapper::CONE_STEP:
+      return "vtkConeStepMapFilter";
+    default:
+      return "vtkMaximumMipmapFilter";
+  }
+}
 }
 
 void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
@@ -505,11 +519,10 @@ vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter()
 vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
 {
   // only the image the chosen method reads, rebuilt only when its input or settings change
-  vtkSmartPointer<vtkReliefAccelerationFilter> wanted;
-  wanted.TakeReference(this->NewAccelerationFilter());
-  if (!this->AccelerationFilter || !this->AccelerationFilter->IsA(wanted->GetClassName()))
+  if (!this->AccelerationFilter ||
+    !this->AccelerationFilter->IsA(AccelerationFilterName(this->SearchMethod)))
   {
-    this->AccelerationFilter = wanted;
+    this->AccelerationFilter.TakeReference(this->NewAccelerationFilter());
     this->AccelerationFilter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
     this->AccelerationFilter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
   }
@@ -527,18 +540,11 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
   int relief[3];
   this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
   int expected[2] = { relief[0], relief[1] };
-  int components = 1;
-  const char* filter = "vtkSafetyRadiusFilter";
   if (this->SearchMethod == MAXIMUM_MIPMAP)
   {
     vtkMaximumMipmapFilter::GetAtlasSize(relief[0], relief[1], expected);
-    filter = "vtkMaximumMipmapFilter";
   }
-  else if (this->SearchMethod == CONE_STEP)
-  {
-    components = 2;
-    filter = "vtkConeStepMapFilter";
-  }
+  const int components = this->SearchMethod == CONE_STEP ? 2 : 1;
   int dimensions[3];
   acceleration->GetDimensions(dimensions);
   vtkDataArray* values = acceleration->GetPointData()->GetScalars();
@@ -553,7 +559,7 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
     << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
     << (values ? values->GetDataTypeAsString() : "nothing") << "; the "
     << this->GetSearchMethodAsString() << " search of this " << relief[0] << "x" << relief[1]
-    << " height map needs " << filter << "'s output for it: " << expected[0] << "x"
+    << " height map needs " << AccelerationFilterName(this->SearchMethod) << "'s output for it: " << expected[0] << "x"
     << expected[1] << ", " << components << " component(s) of float. Connect that filter's "
     << "output, or none to let the mapper build it.");
   return false;

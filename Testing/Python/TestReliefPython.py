@@ -19,8 +19,9 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
                                          vtkWindowToImageFilter)
 
 import vtkrelief
-from vtkrelief import (vtkOpenGLReliefMapper, vtkOpenImageIOReader,
-                       vtkReliefTangentFrameFilter, vtkReliefTextureFilter)
+from vtkrelief import (vtkConeStepMapFilter, vtkMaximumMipmapFilter, vtkOpenGLReliefMapper,
+                       vtkOpenImageIOReader, vtkReliefTangentFrameFilter,
+                       vtkReliefTextureFilter, vtkSafetyRadiusFilter)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("-D", dest="data", required=True)
@@ -50,7 +51,8 @@ def read_image(name):
 class TestReliefPython(unittest.TestCase):
     def test_classes_come_from_the_package(self):
         for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
-                    vtkReliefTangentFrameFilter):
+                    vtkReliefTangentFrameFilter, vtkMaximumMipmapFilter,
+                    vtkSafetyRadiusFilter, vtkConeStepMapFilter):
             self.assertIs(getattr(vtkrelief, cls.__name__), cls)
             self.assertEqual(cls().GetClassName(), cls.__name__)
 
@@ -202,6 +204,24 @@ class TestSampleCountRender(unittest.TestCase):
         self.mapper.SetLinearSteps(4)  # a uniform: takes effect without a rebuild
         samples = self.split(self.render("TestReliefPython_Linear4"))
         self.assertEqual(samples.max(), 4)
+        self.mapper.SetLinearSteps(10)
+
+    def test_precomputed_cone_map_in_a_pipeline(self):
+        # the pipeline computes the cone map once, as ParaView would, and the mapper
+        # takes it on port 2 instead of building its own
+        self.mapper.SetSearchMethodToExactDDA()
+        exact_mean = self.split(self.render("TestReliefPython_ExactDDA")).mean()
+        cones = vtkConeStepMapFilter()
+        cones.SetInputConnection(self.mapper.GetReliefTextureFilter().GetOutputPort())
+        self.mapper.SetAccelerationConnection(cones.GetOutputPort())
+        self.mapper.SetSearchMethodToConeStep()
+        errors = MessageRecorder(self.mapper, vtkCommand.ErrorEvent)
+        samples = self.split(self.render("TestReliefPython_ConeStep"))
+        self.assertEqual(errors.messages, [])
+        self.assertEqual(self.mapper.GetActiveSearchMethod(), vtkOpenGLReliefMapper.CONE_STEP)
+        self.assertEqual(cones.GetOutput().GetNumberOfScalarComponents(), 2)
+        self.assertLess(samples.mean(), exact_mean)
+        self.mapper.SetAccelerationConnection(None)
 
 
 if __name__ == "__main__":
