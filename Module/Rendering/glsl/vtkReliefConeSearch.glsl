@@ -29,6 +29,11 @@ ReliefHit reliefSearchConeStep(ReliefRay ray)
   float t = 0.0f;
   float stepStart = -1.0f; // where the cone step that led to t began; -1: none did
   int samples = 0;
+  // the outcome, acted on after the loop so that the loop body stays small (every
+  // fragment of a SIMD group runs through all of it): a hit at tHit, found exactly, or
+  // bracketed in [bracketStart, tHit]
+  float tHit = -1.0f;
+  float bracketStart = -1.0f;
   for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
   {
     // steps that read the cone map alone: along the cone while it carries the ray out of
@@ -92,20 +97,23 @@ ReliefHit reliefSearchConeStep(ReliefRay ray)
     if (toTheEnd)
     {
       samples += 1;
-      return reliefCellGap(grid, 1.0f) <= 0.0f ? reliefRefineCrossing(ray, grid, t, 1.0f, samples)
-                                               : reliefGridEnd(ray, grid, samples);
+      if (reliefCellGap(grid, 1.0f) <= 0.0f)
+      {
+        bracketStart = t;
+        tHit = 1.0f;
+      }
+      break;
     }
     // the ray reaches the cell's top inside the cell: the cell exactly
     samples += 1;
     float tOut = min(tCell, 1.0f);
-    float tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, max(tOut, t));
+    tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, max(tOut, t));
     if (tHit >= 0.0f)
     {
       // on or below the field where a cone step ended: it entered the field once,
       // somewhere in that step
-      return tHit <= t && stepStart >= 0.0f
-        ? reliefRefineCrossing(ray, grid, stepStart, t, samples)
-        : reliefGridHit(ray, grid, tHit, true, samples);
+      bracketStart = tHit <= t ? stepStart : -1.0f;
+      break;
     }
     if (tCell >= 1.0f)
     {
@@ -124,5 +132,10 @@ ReliefHit reliefSearchConeStep(ReliefRay ray)
       cell.y += signs.y;
     }
   }
-  return reliefGridEnd(ray, grid, samples);
+  if (bracketStart >= 0.0f)
+  {
+    return reliefRefineCrossing(ray, grid, bracketStart, tHit, samples);
+  }
+  return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
+                      : reliefGridEnd(ray, grid, samples);
 }

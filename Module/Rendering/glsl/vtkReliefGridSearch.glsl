@@ -99,6 +99,7 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
   vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
   vec2 cell = floor(reliefGridAt(grid, tStart));
   float tIn = tStart;
+  float tHit = -1.0f; // the hit, made into one after the loop, which stays small
   for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
   {
     // from the cell's own sides each time: summing steps drifts by a cell on rays
@@ -106,12 +107,8 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
     vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
     float tOut = max(min(min(next.x, next.y), tEnd), tIn);
     samples += 1;
-    float t = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), tIn, tOut);
-    if (t >= 0.0f)
-    {
-      return reliefGridHit(ray, grid, t, true, samples);
-    }
-    if (tOut >= tEnd)
+    tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), tIn, tOut);
+    if (tHit >= 0.0f || tOut >= tEnd)
     {
       break;
     }
@@ -125,7 +122,8 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
     }
     tIn = tOut;
   }
-  return reliefGridHit(ray, grid, tEnd, false, samples);
+  return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
+                      : reliefGridHit(ray, grid, tEnd, false, samples);
 }
 
 // Field depth minus ray depth at t, from the cell under the ray: the polynomial that
@@ -220,6 +218,7 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
   vec2 node = vec2(0.0f, 0.0f);
   float t = 0.0f;
   int samples = 0;
+  float tHit = -1.0f; // the hit, made into one after the loop, which stays small
   for (int i = 0; i < RELIEF_MAX_ITERATIONS; ++i)
   {
     // the node's cells, as texel coordinates
@@ -239,11 +238,11 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
       if (level == 0)
       {
         samples += 1;
-        float tHit = reliefCellIntersection(
+        tHit = reliefCellIntersection(
           grid, low, RELIEF_CELL_DEPTHS(low), max(t, tReach), max(min(tOut, 1.0f), t));
         if (tHit >= 0.0f)
         {
-          return reliefGridHit(ray, grid, tHit, true, samples);
+          break;
         }
       }
       else
@@ -293,5 +292,6 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
       }
     }
   }
-  return reliefGridEnd(ray, grid, samples);
+  return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
+                      : reliefGridEnd(ray, grid, samples);
 }

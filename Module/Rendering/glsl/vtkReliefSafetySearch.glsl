@@ -35,6 +35,10 @@ ReliefHit reliefSearchSafetyRadius(ReliefRay ray)
   vec2 inverseRun = reliefInverseRun(grid);
   float t = 0.0f;
   int samples = 0;
+  // the outcome, acted on after the loop so that the loop body stays small: a hit at
+  // tHit, found exactly, or bracketed in [bracketStart, tHit]
+  float tHit = -1.0f;
+  float bracketStart = -1.0f;
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && t < 1.0f; ++i)
   {
     vec2 cell = reliefCellAfter(grid, t, signs, inverseRun);
@@ -47,18 +51,25 @@ ReliefHit reliefSearchSafetyRadius(ReliefRay ray)
     samples += 1;
     if (radius < 0.5f)
     {
-      float tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, tExit);
+      tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, tExit);
       if (tHit >= 0.0f)
       {
-        return reliefGridHit(ray, grid, tHit, true, samples);
+        break;
       }
     }
     else if (reliefCellGap(grid, tExit) <= 0.0f)
     {
       // the only crossing (e = 0) lies in [t, tExit]
-      return reliefRefineCrossing(ray, grid, t, tExit, samples);
+      bracketStart = t;
+      tHit = tExit;
+      break;
     }
     t = tExit;
   }
-  return reliefGridEnd(ray, grid, samples);
+  if (bracketStart >= 0.0f)
+  {
+    return reliefRefineCrossing(ray, grid, bracketStart, tHit, samples);
+  }
+  return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
+                      : reliefGridEnd(ray, grid, samples);
 }
