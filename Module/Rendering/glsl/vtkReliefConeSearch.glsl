@@ -55,40 +55,21 @@ ReliefHit reliefSearchConeStep(ReliefRay ray)
       float tCone = t + cone.y * (cone.x - depth) / (run + cone.y * grid.descent);
       // above the cell's top, so above the field: the step that led here crossed nothing
       bool above = depth < cone.x && tCell > t;
-      if (above && tCone > tCell)
+      bool alongCone = above && tCone > tCell;
+      // or still above the top where the ray leaves the cell: nothing to meet in it
+      bool overCell = above && !alongCone && grid.depth + tCell * grid.descent < cone.x;
+      float tNext = alongCone ? tCone : tCell;
+      if (!(alongCone || overCell) || tNext >= 1.0f)
       {
-        if (tCone >= 1.0f)
-        {
-          toTheEnd = true;
-          break;
-        }
-        stepStart = t;
-        t = tCone;
-        cell = floor(reliefGridAt(grid, t));
-      }
-      else if (above && grid.depth + tCell * grid.descent < cone.x)
-      {
-        // still above the top where the ray leaves the cell: nothing to meet in it
-        if (tCell >= 1.0f)
-        {
-          missed = true;
-          break;
-        }
-        stepStart = -1.0f;
-        t = tCell;
-        if (exits.x < exits.y)
-        {
-          cell.x += signs.x;
-        }
-        else
-        {
-          cell.y += signs.y;
-        }
-      }
-      else
-      {
+        toTheEnd = alongCone;
+        missed = overCell;
         break;
       }
+      // selected, not branched: fragments stepping either way run the same code
+      vec2 across = exits.x < exits.y ? vec2(signs.x, 0.0f) : vec2(0.0f, signs.y);
+      stepStart = alongCone ? t : -1.0f;
+      cell = alongCone ? floor(reliefGridAt(grid, tNext)) : cell + across;
+      t = tNext;
     }
     if (missed)
     {
