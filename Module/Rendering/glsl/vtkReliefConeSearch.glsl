@@ -7,12 +7,11 @@
 //
 // Standing over a cell above its top, the ray may travel inside the cell's cone; it
 // stays above the field there or enters it once. So each step goes to where the ray
-// leaves the cone, reading only the cone map while it lands above the next cell's top.
-// A step that lands lower is checked against that cell's patch: if it ended on or below
-// the field it brackets the first intersection, which bisection narrows and an exact
-// walk over the last few cells finds. Where the cone would not carry the ray out of its cell (the ray below the
-// cell's top, or the cone too narrow), the cell is intersected exactly instead, so the
-// ray never crawls toward a surface it is about to meet.
+// leaves the cone, or, where the cone would not carry it out of the cell, over the cell
+// when the ray stays above the cell's top in it; both read only the cone map. A cell
+// whose top the ray reaches is intersected exactly. If the step that led there ended on
+// or below the field, it brackets the first intersection, which bisection narrows and
+// an exact walk over the last few cells finds.
 //
 // Bound: the hit is the first intersection with the bilinear field, exactly as
 // ExactDDA's (up to float rounding): the binary refinement only narrows the bracket
