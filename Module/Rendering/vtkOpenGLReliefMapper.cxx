@@ -82,7 +82,7 @@ bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wi
   return true;
 }
 
-// A float texture the searches read with texelFetch only: the image as it is.
+// A float texture the searches read texel by texel (nearest filtering): the image as it is.
 bool UploadFetchedTexture(
   vtkTextureObject* texture, vtkOpenGLRenderWindow* window, vtkImageData* image)
 {
@@ -95,6 +95,9 @@ bool UploadFetchedTexture(
   texture->SetFormat(components == 1 ? GL_RED : GL_RG);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  // one texel per cell, repeating as the height map does (texelFetch ignores it)
+  texture->SetWrapS(vtkTextureObject::Repeat);
+  texture->SetWrapT(vtkTextureObject::Repeat);
   return texture->Create2DFromRaw(image->GetDimensions()[0], image->GetDimensions()[1],
     components, VTK_FLOAT, values->GetVoidPointer(0));
 }

@@ -64,12 +64,14 @@ uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
 #define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefAccelerationTexture, \
   ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0).r
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
-// vtkSafetyRadiusFilter's radius and vtkConeStepMapFilter's (top, ratio) of a cell,
-// one texel per cell, repeating with the texture
+// vtkSafetyRadiusFilter's radius and vtkConeStepMapFilter's (top, ratio) of a cell, one
+// texel per cell: read at the texel's centre with nearest filtering, so that the sampler
+// repeats the index (about a tenth of ConeStep's frame on llvmpipe against texelFetch of
+// mod(cell, size)); cells as far as 10^5 texels away still land within 0.01 texel
 #define RELIEF_SAFETY_RADIUS(cell) \
-  texelFetch(reliefAccelerationTexture, ivec2(mod(cell, reliefTextureSize)), 0).r
+  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).r
 #define RELIEF_CONE_STEP(cell) \
-  texelFetch(reliefAccelerationTexture, ivec2(mod(cell, reliefTextureSize)), 0).rg
+  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).rg
 
 //VTK::Relief::Common
 //VTK::Relief::Search
