@@ -213,9 +213,15 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
   ReliefGridRay grid = reliefGridRay(ray, size);
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
-  int level = RELIEF_PYRAMID_TOP;
+  // start at the level whose nodes span about the ray's whole run, not at the root: a
+  // steep ray has no long stretch to skip, and would only pay the descent (any level
+  // will do, so a driver's inexact log2 costs nothing)
+  float run = max(abs(grid.direction.x), abs(grid.direction.y));
+  int level = min(RELIEF_PYRAMID_TOP, int(ceil(log2(max(run, 1.0f)))));
   vec2 tile = floor(vec2(grid.origin.x / size.x, grid.origin.y / size.y));
-  vec2 node = vec2(0.0f, 0.0f);
+  vec2 startSize = reliefPyramidSize(level);
+  vec2 node = min(floor((grid.origin - vec2(tile.x * size.x, tile.y * size.y)) / float(1 << level)),
+    vec2(startSize.x - 1.0f, startSize.y - 1.0f));
   float t = 0.0f;
   int samples = 0;
   float tHit = -1.0f; // the hit, made into one after the loop, which stays small
