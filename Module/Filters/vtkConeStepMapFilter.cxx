@@ -57,6 +57,21 @@ bool InArc(double x, double y, const Arc& arc)
   return arc.Full || (Cross(arc.AX, arc.AY, x, y) >= 0.0 && Cross(x, y, arc.BX, arc.BY) >= 0.0);
 }
 
+// One end of the arc two arcs share: the first of the two arcs' ends on that side
+// (x1, y1 of the first, x2, y2 of the second) that lies in the other arc; false if none.
+bool SharedEnd(double x1, double y1, const Arc& first, double x2, double y2, const Arc& second,
+  double& x, double& y)
+{
+  const bool firstsEnd = InArc(x1, y1, second);
+  if (!firstsEnd && !InArc(x2, y2, first))
+  {
+    return false;
+  }
+  x = firstsEnd ? x1 : x2;
+  y = firstsEnd ? y1 : y2;
+  return true;
+}
+
 // The directions two arcs share; they span less than a full turn together, so they
 // share one arc at most.
 Arc Intersect(const Arc& a, const Arc& b)
@@ -70,34 +85,9 @@ Arc Intersect(const Arc& a, const Arc& b)
     return a;
   }
   Arc shared;
-  if (InArc(a.AX, a.AY, b))
-  {
-    shared.AX = a.AX;
-    shared.AY = a.AY;
-  }
-  else if (InArc(b.AX, b.AY, a))
-  {
-    shared.AX = b.AX;
-    shared.AY = b.AY;
-  }
-  else
-  {
-    shared.Empty = true;
-  }
-  if (InArc(a.BX, a.BY, b))
-  {
-    shared.BX = a.BX;
-    shared.BY = a.BY;
-  }
-  else if (InArc(b.BX, b.BY, a))
-  {
-    shared.BX = b.BX;
-    shared.BY = b.BY;
-  }
-  else
-  {
-    shared.Empty = true;
-  }
+  const bool start = SharedEnd(a.AX, a.AY, a, b.AX, b.AY, b, shared.AX, shared.AY);
+  const bool end = SharedEnd(a.BX, a.BY, a, b.BX, b.BY, b, shared.BX, shared.BY);
+  shared.Empty = !(start && end);
   return shared;
 }
 

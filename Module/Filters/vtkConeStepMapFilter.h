@@ -75,6 +75,8 @@ public:
   vtkTypeMacro(vtkConeStepMapFilter, vtkReliefAccelerationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  int GetOutputComponents() override { return 2; }
+
   /// The largest ratio stored for a width x height map: 4 max(width, height).
   static double GetMaximumRatio(int width, int height);
 
@@ -82,7 +84,6 @@ protected:
   vtkConeStepMapFilter();
   ~vtkConeStepMapFilter() override = default;
 
-  int GetOutputComponents() override { return 2; }
   const char* GetProductName() override { return "a cone step map"; }
   const char* GetOutputName() override { return "ConeStep"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;

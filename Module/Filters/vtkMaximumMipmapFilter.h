@@ -35,6 +35,9 @@ public:
   vtkTypeMacro(vtkMaximumMipmapFilter, vtkReliefAccelerationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  void GetOutputSize(int width, int height, int size[2]) override;
+  int GetOutputComponents() override { return 1; }
+
   /// Number of levels above level 0 for a width x height map: floor(log2(max)).
   static int GetTopLevel(int width, int height);
 
@@ -60,8 +63,6 @@ protected:
   vtkMaximumMipmapFilter();
   ~vtkMaximumMipmapFilter() override = default;
 
-  void GetOutputSize(int width, int height, int size[2]) override;
-  int GetOutputComponents() override { return 1; }
   const char* GetProductName() override { return "a maximum mipmap"; }
   const char* GetOutputName() override { return "MinimumDepth"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;

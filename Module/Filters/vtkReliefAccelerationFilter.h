@@ -30,15 +30,18 @@ public:
   vtkTypeMacro(vtkReliefAccelerationFilter, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * What the output of a width x height height map is: its size (the same by default)
+   * and its components per texel. The mapper checks precomputed images against them.
+   */
+  virtual void GetOutputSize(int width, int height, int size[2]);
+  virtual int GetOutputComponents() = 0;
+  ///@}
+
 protected:
   vtkReliefAccelerationFilter() = default;
   ~vtkReliefAccelerationFilter() override = default;
-
-  /// Size of the output for a width x height height map; the same size by default.
-  virtual void GetOutputSize(int width, int height, int size[2]);
-
-  /// Components per output texel.
-  virtual int GetOutputComponents() = 0;
 
   /// What the filter builds, for messages: "a maximum mipmap".
   virtual const char* GetProductName() = 0;

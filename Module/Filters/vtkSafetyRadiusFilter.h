@@ -70,6 +70,8 @@ public:
   vtkTypeMacro(vtkSafetyRadiusFilter, vtkReliefAccelerationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  int GetOutputComponents() override { return 1; }
+
   ///@{
   /**
    * The depth e by which a ray may pass below the field unnoticed (see the class
@@ -95,7 +97,6 @@ protected:
   vtkSafetyRadiusFilter();
   ~vtkSafetyRadiusFilter() override = default;
 
-  int GetOutputComponents() override { return 1; }
   const char* GetProductName() override { return "safety radii"; }
   const char* GetOutputName() override { return "SafetyRadius"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;

@@ -310,11 +310,16 @@ void vtkOpenGLReliefMapper::SetHeightMapData(vtkImageData* image)
 
 vtkImageData* vtkOpenGLReliefMapper::GetHeightMap()
 {
-  if (this->GetNumberOfInputConnections(1) == 0)
+  return this->GetImageOnPort(1);
+}
+
+vtkImageData* vtkOpenGLReliefMapper::GetImageOnPort(int port)
+{
+  if (this->GetNumberOfInputConnections(port) == 0)
   {
     return nullptr;
   }
-  return vtkImageData::SafeDownCast(this->GetInputDataObject(1, 0));
+  return vtkImageData::SafeDownCast(this->GetInputDataObject(port, 0));
 }
 
 void vtkOpenGLReliefMapper::SetAccelerationConnection(vtkAlgorithmOutput* output)
@@ -329,11 +334,7 @@ void vtkOpenGLReliefMapper::SetAccelerationData(vtkImageData* image)
 
 vtkImageData* vtkOpenGLReliefMapper::GetAcceleration()
 {
-  if (this->GetNumberOfInputConnections(2) == 0)
-  {
-    return nullptr;
-  }
-  return vtkImageData::SafeDownCast(this->GetInputDataObject(2, 0));
+  return this->GetImageOnPort(2);
 }
 
 vtkReliefTextureFilter* vtkOpenGLReliefMapper::GetReliefTextureFilter()
@@ -451,16 +452,16 @@ bool NeedsAcceleration(int method)
 }
 
 // The filter whose output a method that needs acceleration reads.
-const char* AccelerationFilterName(int method)
+vtkSmartPointer<vtkReliefAccelerationFilter> NewAccelerationFilter(int method)
 {
   switch (method)
   {
     case vtkOpenGLReliefMapper::SAFETY_RADIUS:
-      return "vtkSafetyRadiusFilter";
+      return vtkSmartPointer<vtkSafetyRadiusFilter>::New();
     case vtkOpenGLReliefMapper::CONE_STEP:
-      return "vtkConeStepMapFilter";
+      return vtkSmartPointer<vtkConeStepMapFilter>::New();
     default:
-      return "vtkMaximumMipmapFilter";
+      return vtkSmartPointer<vtkMaximumMipmapFilter>::New();
   }
 }
 }
@@ -506,26 +507,13 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
   this->SetActiveSearchMethod(LINEAR_BINARY);
 }
 
-vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter()
-{
-  switch (this->SearchMethod)
-  {
-    case SAFETY_RADIUS:
-      return vtkSafetyRadiusFilter::New();
-    case CONE_STEP:
-      return vtkConeStepMapFilter::New();
-    default:
-      return vtkMaximumMipmapFilter::New();
-  }
-}
-
 vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
 {
   // only the image the chosen method reads, rebuilt only when its input or settings change
-  if (!this->AccelerationFilter ||
-    !this->AccelerationFilter->IsA(AccelerationFilterName(this->SearchMethod)))
+  if (!this->AccelerationFilter || this->AccelerationFilterMethod != this->SearchMethod)
   {
-    this->AccelerationFilter.TakeReference(this->NewAccelerationFilter());
+    this->AccelerationFilter = NewAccelerationFilter(this->SearchMethod);
+    this->AccelerationFilterMethod = this->SearchMethod;
     this->AccelerationFilter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
     this->AccelerationFilter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
   }
@@ -542,12 +530,11 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
 {
   int relief[3];
   this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
-  int expected[2] = { relief[0], relief[1] };
-  if (this->SearchMethod == MAXIMUM_MIPMAP)
-  {
-    vtkMaximumMipmapFilter::GetAtlasSize(relief[0], relief[1], expected);
-  }
-  const int components = this->SearchMethod == CONE_STEP ? 2 : 1;
+  // what the method's own filter would make of this height map
+  vtkSmartPointer<vtkReliefAccelerationFilter> producer = NewAccelerationFilter(this->SearchMethod);
+  int expected[2];
+  producer->GetOutputSize(relief[0], relief[1], expected);
+  const int components = producer->GetOutputComponents();
   int dimensions[3];
   acceleration->GetDimensions(dimensions);
   vtkDataArray* values = acceleration->GetPointData()->GetScalars();
@@ -562,7 +549,7 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
     << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
     << (values ? values->GetDataTypeAsString() : "nothing") << "; the "
     << this->GetSearchMethodAsString() << " search of this " << relief[0] << "x" << relief[1]
-    << " height map needs " << AccelerationFilterName(this->SearchMethod) << "'s output for it: " << expected[0] << "x"
+    << " height map needs " << producer->GetClassName() << "'s output for it: " << expected[0] << "x"
     << expected[1] << ", " << components << " component(s) of float. Connect that filter's "
     << "output, or none to let the mapper build it.");
   return false;

@@ -211,9 +211,10 @@ protected:
   bool UpdateRelief(vtkRenderer* ren);
   bool UpdateReliefSurface();
   bool UpdateReliefTexture(vtkRenderer* ren);
+  /// The image connected to input port `port` (1 or 2), or null.
+  vtkImageData* GetImageOnPort(int port);
   void UpdateAcceleration(vtkRenderer* ren);
   vtkImageData* ComputeAcceleration();
-  vtkReliefAccelerationFilter* NewAccelerationFilter();
   bool CheckAcceleration(vtkImageData* acceleration);
   bool UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration);
   void SetActiveSearchMethod(int method);
@@ -241,6 +242,7 @@ protected:
   vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
   vtkNew<vtkTextureObject> AccelerationTexture; // what the search method needs besides
   vtkSmartPointer<vtkReliefAccelerationFilter> AccelerationFilter; // builds it, for SearchMethod
+  int AccelerationFilterMethod = -1; // the method AccelerationFilter was made for
   vtkTimeStamp AccelerationUploadTime;
   vtkImageData* UploadedAcceleration = nullptr; // compared by address only
   int ActiveSearchMethod = LINEAR_BINARY; // SearchMethod, or its fallback
