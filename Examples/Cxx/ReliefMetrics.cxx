@@ -1,0 +1,180 @@
+#include "ReliefMetrics.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace
+{
+void RequireSameSize(const ReliefMetrics::Capture& a, const ReliefMetrics::Capture& b)
+{
+  if (a.Width != b.Width || a.Height != b.Height)
+  {
+    throw std::invalid_argument("captures of different sizes cannot be compared");
+  }
+}
+
+// Rec. 601 luma of every pixel, as a one-channel float image.
+OIIO::ImageBuf Luma(const ReliefMetrics::Capture& capture)
+{
+  OIIO::ImageBuf luma(OIIO::ImageSpec(capture.Width, capture.Height, 1, OIIO::TypeDesc::FLOAT));
+  std::vector<float> values(static_cast<size_t>(capture.Width) * capture.Height);
+  for (size_t pixel = 0; pixel < values.size(); ++pixel)
+  {
+    const float* rgb = &capture.Rgb[3 * pixel];
+    values[pixel] = 0.299f * rgb[0] + 0.587f * rgb[1] + 0.114f * rgb[2];
+  }
+  luma.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, values.data());
+  return luma;
+}
+
+OIIO::ImageBuf Rgb(const ReliefMetrics::Capture& capture)
+{
+  OIIO::ImageBuf rgb(OIIO::ImageSpec(capture.Width, capture.Height, 3, OIIO::TypeDesc::FLOAT));
+  rgb.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, capture.Rgb.data());
+  return rgb;
+}
+
+// SSIM's window: a normalised 11x11 Gaussian of sigma 1.5, centred on the origin.
+constexpr int WindowRadius = 5;
+OIIO::ImageBuf SsimWindow()
+{
+  OIIO::ImageSpec spec(2 * WindowRadius + 1, 2 * WindowRadius + 1, 1, OIIO::TypeDesc::FLOAT);
+  spec.x = -WindowRadius;
+  spec.y = -WindowRadius;
+  spec.full_x = spec.x;
+  spec.full_y = spec.y;
+  OIIO::ImageBuf window(spec);
+  for (int y = -WindowRadius; y <= WindowRadius; ++y)
+  {
+    for (int x = -WindowRadius; x <= WindowRadius; ++x)
+    {
+      const float weight = std::exp(-(x * x + y * y) / (2.0f * 1.5f * 1.5f));
+      window.setpixel(x, y, &weight);
+    }
+  }
+  return window;
+}
+
+std::vector<float> Values(const OIIO::ImageBuf& image)
+{
+  const OIIO::ImageSpec& spec = image.spec();
+  std::vector<float> values(static_cast<size_t>(spec.width) * spec.height);
+  image.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, values.data());
+  return values;
+}
+
+// `image` less its mean over the whole view.
+OIIO::ImageBuf Centred(const OIIO::ImageBuf& image)
+{
+  const auto statistics = OIIO::ImageBufAlgo::computePixelStats(image);
+  return OIIO::ImageBufAlgo::sub(image, static_cast<float>(statistics.avg[0]));
+}
+
+// The local mean of `image` under the SSIM window.
+std::vector<float> Mean(const OIIO::ImageBuf& image, const OIIO::ImageBuf& window)
+{
+  return Values(OIIO::ImageBufAlgo::convolve(image, window));
+}
+}
+
+namespace ReliefMetrics
+{
+long CoverageDifference(const Capture& a, const Capture& b)
+{
+  RequireSameSize(a, b);
+  long count = 0;
+  for (size_t pixel = 0; pixel < a.EyeDepth.size(); ++pixel)
+  {
+    count += a.Covers(pixel) != b.Covers(pixel) ? 1 : 0;
+  }
+  return count;
+}
+
+double SilhouetteError(const Capture& method, const Capture& polygons, const Capture& truth)
+{
+  const long methodCount = CoverageDifference(method, truth);
+  const long polygonCount = CoverageDifference(polygons, truth);
+  return static_cast<double>(methodCount) / static_cast<double>(std::max(polygonCount, 1L));
+}
+
+DepthError MeasureDepthError(
+  const Capture& method, const Capture& truth, double depthScale, double threshold)
+{
+  RequireSameSize(method, truth);
+  std::vector<double> errors;
+  for (size_t pixel = 0; pixel < method.EyeDepth.size(); ++pixel)
+  {
+    if (method.Covers(pixel) && truth.Covers(pixel))
+    {
+      errors.push_back(std::abs(method.EyeDepth[pixel] - truth.EyeDepth[pixel]) / depthScale);
+    }
+  }
+  DepthError result;
+  result.Pixels = static_cast<long>(errors.size());
+  if (errors.empty())
+  {
+    return result;
+  }
+  std::sort(errors.begin(), errors.end());
+  const size_t count = errors.size();
+  // nearest rank: the smallest value with at least p of the values at or below it
+  auto percentile = [&](double p) {
+    const size_t rank = static_cast<size_t>(std::ceil(p * count));
+    return errors[std::min(std::max(rank, size_t(1)), count) - 1];
+  };
+  result.Median = percentile(0.5);
+  result.Percentile95 = percentile(0.95);
+  const auto above = std::upper_bound(errors.begin(), errors.end(), threshold);
+  result.FractionAbove = static_cast<double>(errors.end() - above) / count;
+  return result;
+}
+
+ColourError MeasureColourError(const Capture& method, const Capture& truth)
+{
+  RequireSameSize(method, truth);
+  ColourError result;
+  result.Rmse = OIIO::ImageBufAlgo::compare(Rgb(method), Rgb(truth), 1.0f, 1.0f).rms_error;
+
+  // second moments from images shifted to zero mean: OpenImageIO convolves in float, and
+  // E[x^2] - E[x]^2 of bright flat regions would cancel to noise as large as C2
+  const OIIO::ImageBuf x = Luma(method);
+  const OIIO::ImageBuf y = Luma(truth);
+  const OIIO::ImageBuf window = SsimWindow();
+  const std::vector<float> meanX = Mean(x, window);
+  const std::vector<float> meanY = Mean(y, window);
+  const OIIO::ImageBuf shiftedX = Centred(x);
+  const OIIO::ImageBuf shiftedY = Centred(y);
+  const std::vector<float> shiftedMeanX = Mean(shiftedX, window);
+  const std::vector<float> shiftedMeanY = Mean(shiftedY, window);
+  const std::vector<float> meanXX = Mean(OIIO::ImageBufAlgo::mul(shiftedX, shiftedX), window);
+  const std::vector<float> meanYY = Mean(OIIO::ImageBufAlgo::mul(shiftedY, shiftedY), window);
+  const std::vector<float> meanXY = Mean(OIIO::ImageBufAlgo::mul(shiftedX, shiftedY), window);
+  const double c1 = 0.01 * 0.01;
+  const double c2 = 0.03 * 0.03;
+  double sum = 0.0;
+  long count = 0;
+  for (int row = WindowRadius; row < method.Height - WindowRadius; ++row)
+  {
+    for (int column = WindowRadius; column < method.Width - WindowRadius; ++column)
+    {
+      const size_t pixel = static_cast<size_t>(row) * method.Width + column;
+      const double mx = meanX[pixel];
+      const double my = meanY[pixel];
+      const double sx = shiftedMeanX[pixel];
+      const double sy = shiftedMeanY[pixel];
+      const double varianceX = meanXX[pixel] - sx * sx;
+      const double varianceY = meanYY[pixel] - sy * sy;
+      const double covariance = meanXY[pixel] - sx * sy;
+      sum += (2.0 * mx * my + c1) * (2.0 * covariance + c2) /
+        ((mx * mx + my * my + c1) * (varianceX + varianceY + c2));
+      ++count;
+    }
+  }
+  result.Ssim = count > 0 ? sum / count : 1.0;
+  return result;
+}
+}
