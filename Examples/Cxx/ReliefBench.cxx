@@ -6,7 +6,10 @@
 // timed one by one (Render + WaitForCompletion); configurations are interleaved over
 // several rounds so machine noise hits all alike. Reported: median and fastest ms/frame
 // over all timed frames, their ratios to plain texturing, and the mean samples per
-// covered pixel (SampleCount mode).
+// covered pixel (SampleCount mode). Then every search method at three height-map sizes
+// (seed 002's Table 1), the acceleration filters' run times, and every method's speed
+// against its accuracy (ReliefAccuracy.h).
+#include "ReliefAccuracy.h"
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -73,37 +76,6 @@ std::string Trim(const std::string& text)
   return first == std::string::npos ? "" : text.substr(first);
 }
 
-struct SampleStatistics
-{
-  double Mean = 0.0;
-  int Maximum = 0;
-  double Coverage = 0.0; // covered fraction of the view
-};
-
-// Samples per covered pixel (the red channel in SampleCount mode).
-SampleStatistics Samples(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper)
-{
-  mapper->SetDisplayModeToSampleCount();
-  window->Render();
-  const std::vector<unsigned char> pixels = ReliefScene::Pixels(window);
-  mapper->SetDisplayModeToShaded();
-  double sum = 0.0;
-  size_t covered = 0;
-  SampleStatistics statistics;
-  for (size_t i = 0; i + 2 < pixels.size(); i += 3)
-  {
-    if (pixels[i + 1] == 0 && pixels[i + 2] == 0) // background is blue
-    {
-      sum += pixels[i];
-      statistics.Maximum = std::max<int>(statistics.Maximum, pixels[i]);
-      ++covered;
-    }
-  }
-  statistics.Mean = covered ? sum / covered : 0.0;
-  statistics.Coverage = static_cast<double>(covered) / (pixels.size() / 3);
-  return statistics;
-}
-
 void ViewSquareFilling(vtkRenderer* renderer, double angle)
 {
   ReliefScene::ViewSquare(renderer, angle);
@@ -115,7 +87,7 @@ void ViewSquareFilling(vtkRenderer* renderer, double angle)
 // resolutions and three view angles; each method's cost relative to LinearBinary's,
 // measured in the same run, interleaved.
 std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
-  vtkOpenGLReliefMapper* relief, int frames, int rounds)
+  vtkOpenGLReliefMapper* relief, const std::vector<int>& sizes, int frames, int rounds)
 {
   // LinearBinary first: the others are measured against it; SafetyRadius exact (e = 0)
   // and at the tolerance that trades a silhouette error of 0.05 depth for speed
@@ -145,7 +117,7 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
   relief->SetBinarySteps(5);
   relief->SetSelfShadowing(true);
   vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
-  for (int size : { 128, 512, 2048 })
+  for (int size : sizes)
   {
     vtkNew<vtkImageResize> resize;
     resize->SetInputData(heights);
@@ -156,7 +128,7 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
     {
       ViewSquareFilling(renderer, angle);
       std::vector<std::vector<double>> milliseconds(std::size(methods));
-      std::vector<SampleStatistics> samples(std::size(methods));
+      std::vector<ReliefScene::SampleStatistics> samples(std::size(methods));
       for (int round = 0; round < rounds; ++round)
       {
         for (size_t m = 0; m < std::size(methods); ++m)
@@ -165,7 +137,7 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
           relief->SetSafetyRadiusTolerance(methods[m].Tolerance);
           if (round == 0)
           {
-            samples[m] = Samples(window, relief);
+            samples[m] = ReliefScene::SampleCounts(window, renderer, relief);
           }
           const std::vector<double> timed = ReliefScene::FrameMilliseconds(window, 1, frames);
           milliseconds[m].insert(milliseconds[m].end(), timed.begin(), timed.end());
@@ -247,7 +219,11 @@ int main(int argc, char* argv[])
 {
   int frames = 20;
   int rounds = 3;
+  bool quick = false;
+  std::string only; // one section, or all when empty
+  std::string method; // the accuracy study's one search method, or all when empty
   std::string report;
+  std::string results;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--data") && i + 1 < argc)
@@ -266,15 +242,46 @@ int main(int argc, char* argv[])
     {
       report = argv[++i];
     }
+    else if (!std::strcmp(argv[i], "--results") && i + 1 < argc)
+    {
+      results = argv[++i];
+    }
+    else if (!std::strcmp(argv[i], "--quick"))
+    {
+      quick = true;
+    }
+    else if (!std::strcmp(argv[i], "--method") && i + 1 < argc &&
+      ReliefScene::SearchMethodNamed(argv[i + 1]) >= 0)
+    {
+      method = vtkOpenGLReliefMapper::GetSearchMethodAsString(
+        ReliefScene::SearchMethodNamed(argv[++i]));
+    }
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc &&
+      (!std::strcmp(argv[i + 1], "plain") || !std::strcmp(argv[i + 1], "methods") ||
+        !std::strcmp(argv[i + 1], "filters") || !std::strcmp(argv[i + 1], "accuracy")))
+    {
+      only = argv[++i];
+    }
     else
     {
-      std::cout << "usage: ./relief bench [--frames N (20)] [--rounds N (3)] [--report FILE.md]\n"
-                   "Times relief mapping against plain texturing at 800x600; --report\n"
-                   "writes the table, machine and versions as Markdown.\n";
+      std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
+                   "                     [--only plain|methods|filters|accuracy]\n"
+                   "                     [--method NAME (the accuracy study's one method)]\n"
+                   "                     [--report FILE.md] [--results FILE.md]\n"
+                   "Times relief mapping against plain texturing at 800x600, every search\n"
+                   "method at three height-map sizes, and every method's speed against its\n"
+                   "accuracy. --report writes the timing tables, --results the accuracy study\n"
+                   "with its charts (PNG, in images/ beside FILE.md), each with machine and\n"
+                   "versions. --quick: small sizes and few frames, a smoke run.\n";
       return std::strcmp(argv[i], "--help") ? 2 : 0;
     }
   }
 
+  if (quick)
+  {
+    frames = std::min(frames, 3);
+    rounds = 1;
+  }
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   auto renderer = ReliefScene::LitRenderer(window, 800, 600);
@@ -298,8 +305,9 @@ int main(int argc, char* argv[])
     { "LinearBinary 10+5, no self-shadowing", vtkOpenGLReliefMapper::LINEAR_BINARY, 10, 5, false },
     { "LinearBinary 32+8", vtkOpenGLReliefMapper::LINEAR_BINARY, 32, 8, true },
   };
+  auto wanted = [&](const char* section) { return only.empty() || only == section; };
   double coverage = 0.0;
-  for (int round = 0; round < rounds; ++round)
+  for (int round = 0; round < rounds && wanted("plain"); ++round)
   {
     for (Configuration& configuration : configurations)
     {
@@ -316,7 +324,8 @@ int main(int argc, char* argv[])
         relief->SetSelfShadowing(configuration.SelfShadowing);
         if (round == 0)
         {
-          const SampleStatistics statistics = Samples(window, relief);
+          const ReliefScene::SampleStatistics statistics =
+            ReliefScene::SampleCounts(window, renderer, relief);
           configuration.MeanSamples = statistics.Mean;
           coverage = statistics.Coverage;
         }
@@ -327,32 +336,61 @@ int main(int argc, char* argv[])
     }
   }
 
-  const std::string methodsTable =
-    MethodsTable(window, renderer, relief, std::max(3, frames / 4), rounds);
-  const std::string filtersTable = FiltersTable(rounds);
+  const std::string methodsTable = wanted("methods")
+    ? MethodsTable(window, renderer, relief,
+        quick ? std::vector<int>{ 64 } : std::vector<int>{ 128, 512, 2048 },
+        std::max(3, frames / 4), rounds)
+    : "(not run)\n";
+  const std::string filtersTable = wanted("filters") ? FiltersTable(rounds) : "(not run)\n";
+  ReliefAccuracy::Options accuracy;
+  accuracy.Method = method;
+  if (quick)
+  {
+    accuracy.HeightMapSize = 32;
+    accuracy.Width = 200;
+    accuracy.Height = 150;
+    accuracy.Frames = 3;
+    accuracy.Rounds = 1;
+    accuracy.Convergence = false;
+  }
+  if (!results.empty())
+  {
+    const size_t slash = results.find_last_of('/');
+    accuracy.ImageDirectory =
+      (slash == std::string::npos ? std::string(".") : results.substr(0, slash)) + "/images";
+  }
+  const std::string accuracySection =
+    wanted("accuracy") ? ReliefAccuracy::Study(accuracy) : "(not run)\n";
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
-  table << "| configuration | ms/frame (median) | x plain | ms/frame (fastest) | x plain | "
-           "samples/pixel (mean) |\n"
-        << "| --- | ---: | ---: | ---: | ---: | ---: |\n";
-  const double plainMedian = ReliefScene::Median(configurations[0].Milliseconds);
-  const double plainFastest =
-    *std::min_element(configurations[0].Milliseconds.begin(), configurations[0].Milliseconds.end());
-  for (const Configuration& configuration : configurations)
+  if (!wanted("plain"))
   {
-    const double median = ReliefScene::Median(configuration.Milliseconds);
-    const double fastest =
-      *std::min_element(configuration.Milliseconds.begin(), configuration.Milliseconds.end());
-    table << "| " << configuration.Name << " | " << median << " | " << median / plainMedian
-          << " | " << fastest << " | " << fastest / plainFastest << " | ";
-    if (configuration.SearchMethod < 0)
+    table << "(not run)\n";
+  }
+  else
+  {
+    table << "| configuration | ms/frame (median) | x plain | ms/frame (fastest) | x plain | "
+             "samples/pixel (mean) |\n"
+          << "| --- | ---: | ---: | ---: | ---: | ---: |\n";
+    const double plainMedian = ReliefScene::Median(configurations[0].Milliseconds);
+    const double plainFastest =
+      *std::min_element(configurations[0].Milliseconds.begin(), configurations[0].Milliseconds.end());
+    for (const Configuration& configuration : configurations)
     {
-      table << "- |\n";
-    }
-    else
-    {
-      table << configuration.MeanSamples << " |\n";
+      const double median = ReliefScene::Median(configuration.Milliseconds);
+      const double fastest =
+        *std::min_element(configuration.Milliseconds.begin(), configuration.Milliseconds.end());
+      table << "| " << configuration.Name << " | " << median << " | " << median / plainMedian
+            << " | " << fastest << " | " << fastest / plainFastest << " | ";
+      if (configuration.SearchMethod < 0)
+      {
+        table << "- |\n";
+      }
+      else
+      {
+        table << configuration.MeanSamples << " |\n";
+      }
     }
   }
 
@@ -361,23 +399,26 @@ int main(int argc, char* argv[])
   std::ifstream osRelease("/etc/os-release");
   std::string system = Trim(FirstLineContaining(osRelease, "PRETTY_NAME"));
   system.erase(std::remove(system.begin(), system.end(), '"'), system.end());
+  window->Render(); // a context to ask, when no section above rendered in this window
   std::istringstream capabilities(
     vtkOpenGLRenderWindow::SafeDownCast(window)->ReportCapabilities());
   const std::string gl = Trim(FirstLineContaining(capabilities, "OpenGL renderer string"));
+  const std::string glVersion = Trim(FirstLineContaining(capabilities, "OpenGL version string"));
   const std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof(date), "%Y-%m-%d", std::gmtime(&now));
 
+  std::ostringstream machine;
+  machine << "Machine: " << cpu << ", " << std::thread::hardware_concurrency() << " threads; "
+          << system << "; OpenGL: " << gl << ", " << glVersion << "; VTK "
+          << vtkVersion::GetVTKVersion() << "; date " << date << ".\n";
   std::ostringstream context;
   context << "800x600, square filling " << std::setprecision(3) << 100.0 * coverage
           << "% of the view at 45 degrees, 512x512 16-bit height map, DepthScale 0.02,\n"
           << "one scene light; " << frames << " warm frames x " << rounds
           << " interleaved rounds per configuration. The median is the figure asked for;\n"
           << "the fastest frame is the one least disturbed by other work on a shared host.\n\n"
-          << "Machine: " << cpu << ", " << std::thread::hardware_concurrency()
-          << " threads; " << system << "; OpenGL: " << gl << "; VTK "
-          << vtkVersion::GetVTKVersion() << "; date "
-          << date << ".\n";
+          << machine.str();
   const std::string methodsContext =
     "Search methods (seed 002 Table 1): the same square and light, the stones height map\n"
     "resampled to each size (4 tiles across the square), DepthScale 0.02, self-shadowing on,\n"
@@ -389,7 +430,7 @@ int main(int argc, char* argv[])
     std::string(vtkSMPTools::GetBackend()) + ", " +
     std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads.\n\n";
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
-            << "\n" << filtersContext << filtersTable;
+            << "\n" << filtersContext << filtersTable << "\n" << accuracySection;
 
   if (!report.empty())
   {
@@ -400,6 +441,14 @@ int main(int argc, char* argv[])
         << methodsContext << methodsTable << "\n## Acceleration filters\n\n" << filtersContext
         << filtersTable;
     std::cout << "written to " << report << "\n";
+  }
+  if (!results.empty())
+  {
+    std::ofstream out(results);
+    out << "# Results: speed against accuracy\n\n"
+        << "Produced by `./relief bench --results " << results << "`.\n\n"
+        << machine.str() << "\n" << accuracySection;
+    std::cout << "written to " << results << "\n";
   }
   return 0;
 }

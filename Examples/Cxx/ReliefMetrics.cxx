@@ -101,6 +101,24 @@ double SilhouetteError(const Capture& method, const Capture& polygons, const Cap
   return static_cast<double>(methodCount) / static_cast<double>(std::max(polygonCount, 1L));
 }
 
+double WrongPixelFraction(
+  const Capture& method, const Capture& truth, double depthScale, double threshold)
+{
+  RequireSameSize(method, truth);
+  long wrong = 0;
+  long covered = 0;
+  for (size_t pixel = 0; pixel < truth.EyeDepth.size(); ++pixel)
+  {
+    const bool both = method.Covers(pixel) && truth.Covers(pixel);
+    covered += truth.Covers(pixel) ? 1 : 0;
+    wrong += method.Covers(pixel) != truth.Covers(pixel) ||
+        (both && std::abs(method.EyeDepth[pixel] - truth.EyeDepth[pixel]) > threshold * depthScale)
+      ? 1
+      : 0;
+  }
+  return static_cast<double>(wrong) / static_cast<double>(std::max(covered, 1L));
+}
+
 DepthError MeasureDepthError(
   const Capture& method, const Capture& truth, double depthScale, double threshold)
 {

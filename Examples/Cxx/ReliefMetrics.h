@@ -29,6 +29,12 @@ long CoverageDifference(const Capture& a, const Capture& b);
 /// match the truth and the method does too, else the method's count over 1.
 double SilhouetteError(const Capture& method, const Capture& polygons, const Capture& truth);
 
+/// The share of the pixels the truth covers that are wrong: covered by one capture and
+/// not the other, or covered by both with eye depths more than threshold x depthScale
+/// apart. One number for coverage and depth together, the error axis of the charts.
+double WrongPixelFraction(
+  const Capture& method, const Capture& truth, double depthScale, double threshold = 0.1);
+
 /// |eye depth - truth's eye depth| / depthScale over the pixels both cover.
 struct DepthError
 {

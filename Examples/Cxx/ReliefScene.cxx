@@ -24,6 +24,8 @@
 #include <cctype>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 namespace ReliefScene
 {
@@ -375,6 +377,71 @@ double Median(std::vector<double> values)
 {
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
+}
+
+ReliefMetrics::Capture Capture(vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  ReliefMetrics::Capture capture;
+  capture.Width = window->GetSize()[0];
+  capture.Height = window->GetSize()[1];
+  const std::vector<unsigned char> pixels = Pixels(window);
+  capture.Rgb.reserve(pixels.size());
+  for (unsigned char value : pixels)
+  {
+    capture.Rgb.push_back(value / 255.0f);
+  }
+  std::vector<float> window01(static_cast<size_t>(capture.Width) * capture.Height);
+  window->GetZbufferData(0, 0, capture.Width - 1, capture.Height - 1, window01.data());
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double range[2];
+  camera->GetClippingRange(range);
+  const double near = range[0];
+  const double far = range[1];
+  capture.EyeDepth.reserve(window01.size());
+  for (float depth : window01)
+  {
+    if (depth >= 1.0f)
+    {
+      capture.EyeDepth.push_back(std::numeric_limits<float>::infinity());
+    }
+    else if (camera->GetParallelProjection())
+    {
+      capture.EyeDepth.push_back(static_cast<float>(near + depth * (far - near)));
+    }
+    else
+    {
+      // the inverse of the perspective depth mapping, window depth in [0, 1]
+      const double ndc = 2.0 * depth - 1.0;
+      capture.EyeDepth.push_back(
+        static_cast<float>(2.0 * near * far / (far + near - ndc * (far - near))));
+    }
+  }
+  return capture;
+}
+
+SampleStatistics SampleCounts(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkOpenGLReliefMapper* mapper)
+{
+  mapper->SetDisplayModeToSampleCount();
+  window->Render();
+  const ReliefMetrics::Capture capture = Capture(window, renderer);
+  mapper->SetDisplayModeToShaded();
+  double sum = 0.0;
+  size_t covered = 0;
+  SampleStatistics statistics;
+  for (size_t pixel = 0; pixel < capture.EyeDepth.size(); ++pixel)
+  {
+    if (capture.Covers(pixel))
+    {
+      const int samples = static_cast<int>(std::lround(255.0f * capture.Rgb[3 * pixel]));
+      sum += samples;
+      statistics.Maximum = std::max(statistics.Maximum, samples);
+      ++covered;
+    }
+  }
+  statistics.Mean = covered ? sum / covered : 0.0;
+  statistics.Coverage = static_cast<double>(covered) / capture.EyeDepth.size();
+  return statistics;
 }
 
 double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)

@@ -3,6 +3,7 @@
 #ifndef ReliefScene_h
 #define ReliefScene_h
 
+#include "ReliefMetrics.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
@@ -97,6 +98,21 @@ double MedianFrameMilliseconds(vtkRenderWindow* window, int warmup = 3, int fram
 
 /// The window's pixels, RGB, bottom row first.
 std::vector<unsigned char> Pixels(vtkRenderWindow* window);
+
+/// Height samples per covered pixel, from `mapper`'s SampleCount display mode (the
+/// display caps a pixel's count at 255); the mapper is left in Shaded mode.
+struct SampleStatistics
+{
+  double Mean = 0.0;
+  int Maximum = 0;
+  double Coverage = 0.0; ///< covered fraction of the view
+};
+SampleStatistics SampleCounts(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkOpenGLReliefMapper* mapper);
+
+/// The window's colours and eye depths (distance in front of `renderer`'s camera, from
+/// the depth buffer and the camera's clipping range), after a render.
+ReliefMetrics::Capture Capture(vtkRenderWindow* window, vtkRenderer* renderer);
 }
 
 #endif

@@ -77,6 +77,20 @@ TEST(ReliefMetrics, DepthErrorIsInUnitsOfDepthScaleOverPixelsBothCover)
   EXPECT_DOUBLE_EQ(error.FractionAbove, 0.94);
 }
 
+TEST(ReliefMetrics, WrongPixelsAreCoverageMismatchesAndDepthsTooFarApart)
+{
+  // truth: 10x10 at depth 2; method: 10x11 (10 extra pixels), and 5 pixels 0.02 deeper
+  const Capture truth = Rectangle(10, 10);
+  const Capture method = Make(32, 32, [](int x, int y) {
+    return x < 10 && y < 11 ? (y == 0 && x < 5 ? 2.02f : 2.0f) : Nothing;
+  });
+  // DepthScale 0.1: 0.02 is 0.2 of it, above 0.1
+  EXPECT_DOUBLE_EQ(ReliefMetrics::WrongPixelFraction(method, truth, 0.1), 15.0 / 100.0);
+  // DepthScale 1: 0.02 is within 0.1 of it
+  EXPECT_DOUBLE_EQ(ReliefMetrics::WrongPixelFraction(method, truth, 1.0), 10.0 / 100.0);
+  EXPECT_DOUBLE_EQ(ReliefMetrics::WrongPixelFraction(truth, truth, 0.1), 0.0);
+}
+
 TEST(ReliefMetrics, DepthErrorOfIdenticalCapturesIsZero)
 {
   const auto error = ReliefMetrics::MeasureDepthError(Rectangle(8, 8), Rectangle(8, 8), 0.05);

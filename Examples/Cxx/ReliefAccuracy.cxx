@@ -1,0 +1,485 @@
+#include "ReliefAccuracy.h"
+
+#include "ReliefMetrics.h"
+#include "ReliefScene.h"
+
+#include "vtkActor.h"
+#include "vtkAxis.h"
+#include "vtkCamera.h"
+#include "vtkChartLegend.h"
+#include "vtkChartXY.h"
+#include "vtkConeStepMapFilter.h"
+#include "vtkContextScene.h"
+#include "vtkContextView.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkImageResize.h"
+#include "vtkMaximumMipmapFilter.h"
+#include "vtkNew.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkPNGWriter.h"
+#include "vtkPen.h"
+#include "vtkPlot.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkReliefDisplacementFilter.h"
+#include "vtkReliefTextureFilter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSafetyRadiusFilter.h"
+#include "vtkTable.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <tuple>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+// One point of the chart: a search method at one setting of its parameters.
+struct Setting
+{
+  std::string Family;
+  std::string Parameters;
+  int Method;
+  int LinearSteps = 10;
+  int BinarySteps = 5;
+  double Tolerance = 0.0;
+};
+
+std::vector<Setting> Settings()
+{
+  using Mapper = vtkOpenGLReliefMapper;
+  std::vector<Setting> settings;
+  for (int steps : { 4, 8, 16, 32, 64 })
+  {
+    settings.push_back({ "Linear", std::to_string(steps) + " steps", Mapper::LINEAR, steps, 0 });
+  }
+  for (auto steps : { std::pair<int, int>{ 5, 3 }, { 10, 5 }, { 20, 6 }, { 40, 8 } })
+  {
+    settings.push_back({ "LinearBinary",
+      std::to_string(steps.first) + "+" + std::to_string(steps.second) + " steps",
+      Mapper::LINEAR_BINARY, steps.first, steps.second });
+  }
+  for (auto steps : { std::pair<int, int>{ 8, 3 }, { 16, 5 }, { 32, 5 } })
+  {
+    settings.push_back({ "Secant",
+      std::to_string(steps.first) + "+" + std::to_string(steps.second) + " steps",
+      Mapper::SECANT, steps.first, steps.second });
+  }
+  settings.push_back({ "ExactDDA", "", Mapper::EXACT_DDA });
+  for (double tolerance : { 0.0, 0.05, 0.2 })
+  {
+    std::ostringstream label;
+    label << "e = " << tolerance;
+    settings.push_back({ "SafetyRadius", label.str(), Mapper::SAFETY_RADIUS, 10, 5, tolerance });
+  }
+  settings.push_back({ "ConeStep", "", Mapper::CONE_STEP });
+  settings.push_back({ "MaximumMipmap", "", Mapper::MAXIMUM_MIPMAP });
+  return settings;
+}
+
+struct Row
+{
+  std::string Family;
+  std::string Parameters;
+  double Milliseconds = 0.0;
+  double MeanSamples = -1.0; // -1: not a search (the meshes)
+  int MaximumSamples = 0;
+  double WrongPixels = 0.0;
+  double Silhouette = 0.0;
+  ReliefMetrics::DepthError Depth;
+  ReliefMetrics::ColourError Colour;
+  double Megabytes = 0.0;
+};
+
+// Megabytes of the acceleration image a search method reads (0 for none).
+double AccelerationMegabytes(int method, vtkImageData* relief)
+{
+  vtkSmartPointer<vtkReliefAccelerationFilter> filter;
+  switch (method)
+  {
+    case vtkOpenGLReliefMapper::SAFETY_RADIUS:
+      filter = vtkSmartPointer<vtkSafetyRadiusFilter>::New();
+      break;
+    case vtkOpenGLReliefMapper::CONE_STEP:
+      filter = vtkSmartPointer<vtkConeStepMapFilter>::New();
+      break;
+    case vtkOpenGLReliefMapper::MAXIMUM_MIPMAP:
+      filter = vtkSmartPointer<vtkMaximumMipmapFilter>::New();
+      break;
+    default:
+      return 0.0;
+  }
+  int size[2];
+  filter->GetOutputSize(relief->GetDimensions()[0], relief->GetDimensions()[1], size);
+  return 4.0 * size[0] * size[1] * filter->GetOutputComponents() / 1e6; // 32-bit floats
+}
+
+// What the GPU holds for a mesh drawn by vtkPolyDataMapper: float positions, normals and
+// texture coordinates per point, 32-bit indices per triangle.
+double MeshMegabytes(vtkPolyData* mesh)
+{
+  return (32.0 * mesh->GetNumberOfPoints() + 12.0 * mesh->GetNumberOfPolys()) / 1e6;
+}
+
+vtkSmartPointer<vtkPolyData> Displaced(
+  vtkPolyData* surface, vtkImageData* relief, double depthScale, double edgeTexels)
+{
+  vtkNew<vtkReliefDisplacementFilter> displacement;
+  displacement->SetInputData(surface);
+  displacement->SetReliefData(relief);
+  displacement->SetDepthScale(depthScale);
+  displacement->SetMaximumEdgeTexels(edgeTexels);
+  displacement->SetMaximumNumberOfTriangles(vtkIdType(1) << 24);
+  displacement->Update();
+  return displacement->GetOutput();
+}
+
+// Indices of the rows no other row beats in both cost and error, cheapest first.
+std::vector<size_t> ParetoFront(const std::vector<double>& cost, const std::vector<double>& error)
+{
+  std::vector<size_t> order(cost.size());
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return cost[a] < cost[b] || (cost[a] == cost[b] && error[a] < error[b]);
+  });
+  std::vector<size_t> front;
+  for (size_t i : order)
+  {
+    if (front.empty() || error[i] < error[front.back()])
+    {
+      front.push_back(i);
+    }
+  }
+  return front;
+}
+
+constexpr const char* TruthFamily = "ground truth";
+
+// Errors below this are drawn at it: a log axis has no zero.
+constexpr double ErrorFloor = 1e-6;
+
+// Error (x, log) against a cost (y) for every row with one, each family its colour, the
+// Pareto front as a line; written as PNG.
+void DrawChart(const std::vector<Row>& rows, bool bySamples, const std::string& title,
+  const std::string& file)
+{
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(900, 600);
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  vtkAxis* errorAxis = chart->GetAxis(vtkAxis::BOTTOM);
+  errorAxis->SetTitle("wrong pixels against the ground truth (share of the truth's pixels)");
+  errorAxis->SetLogScale(true);
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle(bySamples ? "height samples per pixel (mean)" : "ms per frame (median)");
+
+  auto costOf = [&](const Row& row) { return bySamples ? row.MeanSamples : row.Milliseconds; };
+  std::vector<double> costs;
+  std::vector<double> errors;
+  std::vector<const Row*> charted;
+  for (const Row& row : rows)
+  {
+    // the truth is the reference, not a point to beat
+    if (costOf(row) >= 0.0 && row.Family != TruthFamily)
+    {
+      charted.push_back(&row);
+      costs.push_back(costOf(row));
+      errors.push_back(std::max(row.WrongPixels, ErrorFloor));
+    }
+  }
+  auto addPlot = [&](int type, const std::string& name, const std::vector<size_t>& members,
+                   const unsigned char colour[3]) {
+    vtkNew<vtkTable> table;
+    vtkNew<vtkDoubleArray> x;
+    x->SetName("error");
+    vtkNew<vtkDoubleArray> y;
+    y->SetName(name.c_str());
+    for (size_t i : members)
+    {
+      x->InsertNextValue(errors[i]);
+      y->InsertNextValue(costs[i]);
+    }
+    table->AddColumn(x);
+    table->AddColumn(y);
+    vtkPlot* plot = chart->AddPlot(type);
+    plot->SetInputData(table, 0, 1);
+    plot->SetColor(colour[0], colour[1], colour[2], 255);
+    plot->SetWidth(type == vtkChart::LINE ? 1.5f : 6.0f);
+    return plot;
+  };
+  static const unsigned char palette[][3] = { { 31, 119, 180 }, { 255, 127, 14 }, { 44, 160, 44 },
+    { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 227, 119, 194 }, { 127, 127, 127 },
+    { 188, 189, 34 }, { 23, 190, 207 } };
+  std::vector<std::string> families;
+  for (const Row* row : charted)
+  {
+    if (std::find(families.begin(), families.end(), row->Family) == families.end())
+    {
+      families.push_back(row->Family);
+    }
+  }
+  for (size_t f = 0; f < families.size(); ++f)
+  {
+    std::vector<size_t> members;
+    for (size_t i = 0; i < charted.size(); ++i)
+    {
+      if (charted[i]->Family == families[f])
+      {
+        members.push_back(i);
+      }
+    }
+    addPlot(vtkChart::POINTS, families[f], members, palette[f % std::size(palette)]);
+  }
+  const unsigned char black[3] = { 0, 0, 0 };
+  addPlot(vtkChart::LINE, "Pareto front", ParetoFront(costs, errors), black);
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkWindowToImageFilter> image;
+  image->SetInput(view->GetRenderWindow());
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(image->GetOutputPort());
+  writer->SetFileName(file.c_str());
+  writer->Write();
+}
+
+// Renders the scene with one actor visible and measures it against the truth.
+struct Bench
+{
+  vtkRenderWindow* Window;
+  vtkRenderer* Renderer;
+  std::vector<vtkActor*> Actors;
+  ReliefMetrics::Capture Truth;
+  ReliefMetrics::Capture Polygons;
+  double DepthScale;
+
+  ReliefMetrics::Capture Show(vtkActor* shown)
+  {
+    for (vtkActor* actor : this->Actors)
+    {
+      actor->SetVisibility(actor == shown);
+    }
+    this->Window->Render();
+    return ReliefScene::Capture(this->Window, this->Renderer);
+  }
+
+  void Measure(vtkActor* shown, Row& row)
+  {
+    const ReliefMetrics::Capture capture = this->Show(shown);
+    row.WrongPixels = ReliefMetrics::WrongPixelFraction(capture, this->Truth, this->DepthScale);
+    row.Silhouette = ReliefMetrics::SilhouetteError(capture, this->Polygons, this->Truth);
+    row.Depth = ReliefMetrics::MeasureDepthError(capture, this->Truth, this->DepthScale);
+    row.Colour = ReliefMetrics::MeasureColourError(capture, this->Truth);
+  }
+};
+
+std::string Table(const std::vector<Row>& rows)
+{
+  std::ostringstream table;
+  table << "| method | setting | wrong pixels | silhouette error | depth error median | "
+           "95th percentile | share above 0.1 | colour RMSE | SSIM | ms/frame | "
+           "samples/pixel (mean) | (max) | GPU MB |\n"
+        << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const Row& row : rows)
+  {
+    table << std::setprecision(3) << "| " << row.Family << " | " << row.Parameters << " | "
+          << row.WrongPixels << " | " << row.Silhouette << " | " << row.Depth.Median << " | "
+          << row.Depth.Percentile95 << " | " << row.Depth.FractionAbove << " | "
+          << row.Colour.Rmse << " | " << row.Colour.Ssim << " | " << std::fixed
+          << std::setprecision(1) << row.Milliseconds << std::defaultfloat << " | ";
+    if (row.MeanSamples < 0.0)
+    {
+      table << "- | - | ";
+    }
+    else
+    {
+      table << std::setprecision(3) << row.MeanSamples << " | "
+            << (row.MaximumSamples >= 255 ? std::string(">= 255") : std::to_string(row.MaximumSamples))
+            << " | ";
+    }
+    table << std::setprecision(3) << row.Megabytes << " |\n";
+  }
+  return table.str();
+}
+}
+
+namespace ReliefAccuracy
+{
+std::string Study(const Options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
+  resize->SetOutputDimensions(options.HeightMapSize, options.HeightMapSize, 1);
+  vtkNew<vtkReliefTextureFilter> reliefTexture;
+  reliefTexture->SetInputConnection(resize->GetOutputPort());
+  reliefTexture->Update();
+  vtkImageData* relief = reliefTexture->GetOutput();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  auto renderer = ReliefScene::LitRenderer(window, options.Width, options.Height);
+  auto square = ReliefScene::Square(1.0);
+
+  vtkNew<vtkOpenGLReliefMapper> reliefMapper;
+  reliefMapper->SetInputData(square);
+  reliefMapper->SetHeightMapConnection(resize->GetOutputPort());
+  reliefMapper->SetDepthScale(options.DepthScale);
+  // the stock mapper casts no shadows: both are lit alike, without them
+  reliefMapper->SetSelfShadowing(false);
+  auto reliefActor = ReliefScene::ReliefActor(reliefMapper, "stones_color.png");
+
+  auto meshActor = [&](vtkPolyData* mesh) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(mesh);
+    return ReliefScene::ReliefActor(mapper, "stones_color.png");
+  };
+  auto truthMesh = Displaced(square, relief, options.DepthScale, 0.5);
+  auto truthActor = meshActor(truthMesh);
+  auto polygonsActor = meshActor(square);
+  // the dense mesh of equal detail: points one texel apart along u and v
+  auto denseMesh = Displaced(square, relief, options.DepthScale, 1.5);
+  auto denseActor = meshActor(denseMesh);
+  std::vector<vtkActor*> actors = { reliefActor, truthActor, polygonsActor, denseActor };
+  for (vtkActor* actor : actors)
+  {
+    renderer->AddActor(actor);
+  }
+  // the square fills the view: the flat frame cannot change a silhouette (the quadric
+  // frame's scenes measure that), so every pixel compares depths
+  ReliefScene::ViewSquare(renderer, options.Angle);
+  renderer->GetActiveCamera()->Dolly(3.0);
+  renderer->ResetCameraClippingRange();
+
+  Bench bench{ window, renderer, actors, {}, {}, options.DepthScale };
+  bench.Truth = bench.Show(truthActor);
+  bench.Polygons = bench.Show(polygonsActor);
+
+  // every row: how to show it, then its figures; timed last, in interleaved rounds, so
+  // that machine noise hits all alike
+  std::vector<Row> rows;
+  std::vector<std::function<void()>> shows;
+  const double reliefMegabytes = 16.0 * 4.0 / 3.0 * relief->GetNumberOfPoints() / 1e6;
+  for (const Setting& setting : Settings())
+  {
+    if (!options.Method.empty() && setting.Family != options.Method)
+    {
+      continue;
+    }
+    shows.push_back([&, setting]() {
+      bench.Show(reliefActor);
+      reliefMapper->SetSearchMethod(setting.Method);
+      reliefMapper->SetLinearSteps(setting.LinearSteps);
+      reliefMapper->SetBinarySteps(std::max(setting.BinarySteps, 1));
+      reliefMapper->SetSafetyRadiusTolerance(setting.Tolerance);
+    });
+    shows.back()();
+    Row row{ setting.Family, setting.Parameters };
+    bench.Measure(reliefActor, row);
+    const ReliefScene::SampleStatistics samples =
+      ReliefScene::SampleCounts(window, renderer, reliefMapper);
+    row.MeanSamples = samples.Mean;
+    row.MaximumSamples = samples.Maximum;
+    row.Megabytes = reliefMegabytes + AccelerationMegabytes(setting.Method, relief);
+    rows.push_back(row);
+    std::cout << "accuracy: " << setting.Family << " " << setting.Parameters << " measured\n";
+  }
+  const std::tuple<const char*, const char*, vtkActor*, vtkPolyData*> meshes[] = {
+    { "dense mesh", "1 point per texel", denseActor, denseMesh },
+    { "coarse polygons", "no relief", polygonsActor, square },
+    { TruthFamily, "edges of 0.5 texel", truthActor, truthMesh },
+  };
+  for (const auto& [family, parameters, actor, mesh] : meshes)
+  {
+    Row row{ family, parameters };
+    bench.Measure(actor, row);
+    row.Megabytes = MeshMegabytes(mesh);
+    rows.push_back(row);
+    shows.push_back([&bench, actor = actor]() { bench.Show(actor); });
+  }
+  std::vector<std::vector<double>> milliseconds(rows.size());
+  for (int round = 0; round < options.Rounds; ++round)
+  {
+    for (size_t r = 0; r < rows.size(); ++r)
+    {
+      shows[r]();
+      const std::vector<double> timed = ReliefScene::FrameMilliseconds(window, 2, options.Frames);
+      milliseconds[r].insert(milliseconds[r].end(), timed.begin(), timed.end());
+    }
+    std::cout << "accuracy: timing round " << round + 1 << " of " << options.Rounds << " done\n";
+  }
+  for (size_t r = 0; r < rows.size(); ++r)
+  {
+    rows[r].Milliseconds = ReliefScene::Median(milliseconds[r]);
+  }
+
+  std::ostringstream convergence;
+  if (options.Convergence)
+  {
+    auto finerMesh = Displaced(square, relief, options.DepthScale, 0.25);
+    auto finerActor = meshActor(finerMesh);
+    renderer->AddActor(finerActor);
+    bench.Actors.push_back(finerActor);
+    const ReliefMetrics::Capture finer = bench.Show(finerActor);
+    const auto depth = ReliefMetrics::MeasureDepthError(bench.Truth, finer, options.DepthScale);
+    convergence << "Convergence of the ground truth: against the truth with edges of 0.25 texel ("
+                << finerMesh->GetNumberOfPolys() << " triangles), the truth used ("
+                << truthMesh->GetNumberOfPolys() << " triangles) has "
+                << ReliefMetrics::WrongPixelFraction(bench.Truth, finer, options.DepthScale)
+                << " wrong pixels, depth error median " << depth.Median << " and 95th percentile "
+                << depth.Percentile95 << " (x DepthScale), colour RMSE "
+                << ReliefMetrics::MeasureColourError(bench.Truth, finer).Rmse << ".\n\n";
+  }
+
+  std::ostringstream section;
+  section << "Scene: the stones height map resampled to " << options.HeightMapSize << "x"
+          << options.HeightMapSize << ", one tile on the unit square filling the view, DepthScale "
+          << options.DepthScale << ", seen " << options.Angle << " degrees from its normal in a "
+          << options.Width << "x" << options.Height
+          << " window; one scene light, self-shadowing off (the stock mapper casts none). "
+             "Ground truth: vtkReliefDisplacementFilter with edges of at most 0.5 texel ("
+          << truthMesh->GetNumberOfPolys()
+          << " triangles) drawn by vtkPolyDataMapper with the same camera, clipping range, "
+             "light and colour texture. Dense mesh: the same filter with points one texel "
+             "apart ("
+          << denseMesh->GetNumberOfPolys()
+          << " triangles). Wrong pixels: covered by one render and not the other, or more "
+             "than 0.1 DepthScale apart in eye depth, as a share of the truth's pixels "
+             "(charted at "
+          << ErrorFloor << " when below). Depth errors are in units of DepthScale; "
+          << options.Frames << " timed frames x " << options.Rounds
+          << " interleaved rounds per row (median). GPU MB: textures and acceleration image for "
+             "relief, vertex and index buffers for meshes.\n\n"
+          << convergence.str() << Table(rows) << "\n";
+  if (!options.ImageDirectory.empty())
+  {
+    std::filesystem::create_directories(options.ImageDirectory);
+    DrawChart(rows, false, "Speed against accuracy",
+      options.ImageDirectory + "/accuracy_time.png");
+    DrawChart(rows, true, "Height samples against accuracy",
+      options.ImageDirectory + "/accuracy_samples.png");
+    section << "![error against ms/frame](images/accuracy_time.png)\n\n"
+            << "![error against samples per pixel](images/accuracy_samples.png)\n\n";
+  }
+  section << "Study time: " << std::fixed << std::setprecision(0)
+          << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+          << " s.\n";
+  return section.str();
+}
+}

@@ -1,0 +1,94 @@
+"""Runs ReliefBench --quick on the accuracy study with one search method and checks what
+it writes: the results table (every expected row, every figure a finite number, the truth
+error-free, the relief closer to the truth than the bare polygons) and both charts."""
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+EXPECTED_ROWS = ["ConeStep", "dense mesh", "coarse polygons", "ground truth"]
+FIGURE_COLUMNS = range(2, 13)  # wrong pixels .. GPU MB
+
+
+def fail(message):
+    print("ERROR: " + message)
+    sys.exit(1)
+
+
+def table_rows(text):
+    rows = {}
+    for line in text.splitlines():
+        cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
+        if line.startswith("| ") and cells[0] in EXPECTED_ROWS:
+            rows[cells[0]] = cells
+    return rows
+
+
+def figure(cell):
+    if cell in ("-", ">= 255"):
+        return None
+    value = float(cell)
+    if not math.isfinite(value):
+        fail("a figure is not finite: " + cell)
+    return value
+
+
+def check_chart(path):
+    if not os.path.isfile(path):
+        fail("no chart at " + path)
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    if (width, height) != (900, 600):
+        fail("%s is %dx%d, not 900x600" % (path, width, height))
+    low, high = image.GetPointData().GetScalars().GetRange(0)
+    if low == high:
+        fail(path + " is blank")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--bench", required=True)
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--output", required=True)
+    arguments = parser.parse_args()
+    os.makedirs(arguments.output, exist_ok=True)
+    results = os.path.join(arguments.output, "results.md")
+    for stale in (results, os.path.join(arguments.output, "images", "accuracy_time.png")):
+        if os.path.exists(stale):
+            os.remove(stale)
+    command = [arguments.bench, "--data", arguments.data, "--quick", "--only", "accuracy",
+               "--method", "cone-step", "--results", results]
+    run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(run.stdout)
+    if run.returncode != 0:
+        fail("the bench exited with %d" % run.returncode)
+    if not os.path.isfile(results):
+        fail("no results at " + results)
+    with open(results) as file:
+        text = file.read()
+    if "Machine:" not in text or "VTK" not in text:
+        fail("the results do not name the machine and versions")
+    rows = table_rows(text)
+    for name in EXPECTED_ROWS:
+        if name not in rows:
+            fail("no row for " + name)
+        for column in FIGURE_COLUMNS:
+            figure(rows[name][column])
+    wrong = {name: figure(rows[name][2]) for name in EXPECTED_ROWS}
+    if wrong["ground truth"] != 0.0:
+        fail("the ground truth differs from itself")
+    if not wrong["ConeStep"] < wrong["coarse polygons"]:
+        fail("the relief is no closer to the truth than the bare polygons")
+    for chart in ("accuracy_time.png", "accuracy_samples.png"):
+        check_chart(os.path.join(arguments.output, "images", chart))
+    print("bench smoke run: results and charts well formed")
+
+
+if __name__ == "__main__":
+    main()
