@@ -14,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkReliefDisplacementFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
@@ -113,6 +114,19 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
   mapper->SetHeightMapData(ReadImage(heightMap));
   mapper->SetDepthScale(depthScale);
   return mapper;
+}
+
+vtkSmartPointer<vtkPolyData> DisplacedMesh(
+  vtkPolyData* surface, vtkImageData* relief, double depthScale, double edgeTexels)
+{
+  vtkNew<vtkReliefDisplacementFilter> displacement;
+  displacement->SetInputData(surface);
+  displacement->SetReliefData(relief);
+  displacement->SetDepthScale(depthScale);
+  displacement->SetMaximumEdgeTexels(edgeTexels);
+  displacement->SetMaximumNumberOfTriangles(vtkIdType(1) << 24);
+  displacement->Update();
+  return displacement->GetOutput();
 }
 
 vtkSmartPointer<vtkActor> ReliefActor(vtkMapper* mapper, const std::string& colorTexture)

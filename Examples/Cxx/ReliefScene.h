@@ -46,6 +46,12 @@ vtkSmartPointer<vtkPolyData> Torus();
 vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
   vtkPolyData* surface, const std::string& heightMap, double depthScale);
 
+/// The relief as real geometry (vtkReliefDisplacementFilter): `surface` subdivided until
+/// its edges span at most `edgeTexels` texels of `relief` (vtkReliefTextureFilter's
+/// output), sunk by the bilinear depth x depthScale; up to 2^24 triangles.
+vtkSmartPointer<vtkPolyData> DisplacedMesh(
+  vtkPolyData* surface, vtkImageData* relief, double depthScale, double edgeTexels);
+
 /// An actor with `mapper`, the colour texture of Data/ (none when empty) and a
 /// slightly specular material.
 vtkSmartPointer<vtkActor> ReliefActor(vtkMapper* mapper, const std::string& colorTexture);

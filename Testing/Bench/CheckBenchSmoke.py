@@ -1,6 +1,7 @@
-"""Runs ReliefBench --quick on the accuracy study with one search method and checks what
-it writes: the results table (every expected row, every figure a finite number, the truth
-error-free, the relief closer to the truth than the bare polygons) and both charts."""
+"""Runs ReliefBench --quick on the accuracy study (one search method) and the stability
+sweeps, and checks what it writes: the results table (every expected row, every figure a
+finite number, the truth error-free, the relief closer to the truth than the bare
+polygons), a table per sweep, and every chart."""
 import argparse
 import math
 import os
@@ -11,6 +12,9 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 EXPECTED_ROWS = ["ConeStep", "dense mesh", "coarse polygons", "ground truth"]
 FIGURE_COLUMNS = range(2, 13)  # wrong pixels .. GPU MB
+CHARTS = ["accuracy_time.png", "accuracy_samples.png", "sweep_angle.png", "sweep_width.png",
+          "sweep_curvature.png", "sweep_depth.png"]
+SWEEPS = ["view angle", "wall width", "sphere radius", "DepthScale"]
 
 
 def fail(message):
@@ -36,6 +40,26 @@ def figure(cell):
     return value
 
 
+def check_sweep(text, parameter):
+    """The sweep's table: a row per value, each cell "wrong / wrong depth", both shares."""
+    lines = text.splitlines()
+    header = [i for i, line in enumerate(lines) if line.startswith("| " + parameter)]
+    if not header:
+        fail("no table for the sweep over " + parameter)
+    rows = 0
+    for line in lines[header[0] + 2:]:
+        if not line.startswith("| "):
+            break
+        for cell in line.strip().strip("|").split("|")[1:]:
+            for value in cell.split("/"):
+                number = figure(value.strip())
+                if not number >= 0.0:
+                    fail("a share out of range in the sweep over %s: %s" % (parameter, line))
+        rows += 1
+    if rows < 2:
+        fail("the sweep over %s has %d values" % (parameter, rows))
+
+
 def check_chart(path):
     if not os.path.isfile(path):
         fail("no chart at " + path)
@@ -59,10 +83,10 @@ def main():
     arguments = parser.parse_args()
     os.makedirs(arguments.output, exist_ok=True)
     results = os.path.join(arguments.output, "results.md")
-    for stale in (results, os.path.join(arguments.output, "images", "accuracy_time.png")):
+    for stale in [results] + [os.path.join(arguments.output, "images", c) for c in CHARTS]:
         if os.path.exists(stale):
             os.remove(stale)
-    command = [arguments.bench, "--data", arguments.data, "--quick", "--only", "accuracy",
+    command = [arguments.bench, "--data", arguments.data, "--quick", "--only", "accuracy,sweeps",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -85,7 +109,9 @@ def main():
         fail("the ground truth differs from itself")
     if not wrong["ConeStep"] < wrong["coarse polygons"]:
         fail("the relief is no closer to the truth than the bare polygons")
-    for chart in ("accuracy_time.png", "accuracy_samples.png"):
+    for sweep in SWEEPS:
+        check_sweep(text, sweep)
+    for chart in CHARTS:
         check_chart(os.path.join(arguments.output, "images", chart))
     print("bench smoke run: results and charts well formed")
 

@@ -1,0 +1,306 @@
+#include "ReliefSweeps.h"
+
+#include "ReliefChart.h"
+#include "ReliefMetrics.h"
+#include "ReliefScene.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkImageResize.h"
+#include "vtkNew.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkReliefTextureFilter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTexturedSphereSource.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+// One scene of a sweep: the quantity's value and what is drawn.
+struct Case
+{
+  double Value;
+  vtkSmartPointer<vtkPolyData> Surface;
+  vtkSmartPointer<vtkImageData> Heights;
+  double DepthScale;
+  double Angle; // view angle from +z, degrees
+  double Dolly; // after ViewSquare's framing: above 1 comes closer
+};
+
+struct Sweep
+{
+  std::string Name;      // a title
+  std::string Parameter; // the x axis
+  std::string File;      // chart file name
+  std::string Failure;   // what the chart shows failing, for the reader
+  bool Silhouettes;      // chart all wrong pixels, not only those with a wrong depth
+  std::vector<Case> Cases;
+};
+
+// A method's error in one case: all wrong pixels (coverage or depth), and the share of
+// the pixels both cover whose depth is wrong (the search's own failures).
+struct Error
+{
+  double Wrong;
+  double WrongDepth;
+};
+
+constexpr double ErrorFloor = 1e-6;
+
+vtkSmartPointer<vtkImageData> Stones(int size)
+{
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
+  resize->SetOutputDimensions(size, size, 1);
+  resize->Update();
+  return resize->GetOutput();
+}
+
+// A 64x64 height image (white = high) of walls `width` texels wide every 16 texels along
+// both axes, rising from a low floor: seed 002's Fig. 11, feature width as a parameter.
+vtkSmartPointer<vtkImageData> Walls(int width)
+{
+  constexpr int Size = 64;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(Size, Size, 1);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* heights = static_cast<float*>(image->GetScalarPointer());
+  for (int j = 0; j < Size; ++j)
+  {
+    for (int i = 0; i < Size; ++i)
+    {
+      const bool wall = i % 16 < width || j % 16 < width;
+      heights[j * Size + i] = wall ? 1.0f : 0.2f;
+    }
+  }
+  return image;
+}
+
+// A sphere of `radius` whose texture tiles keep one texel the same world size at every
+// radius, so only the curvature under the relief changes.
+vtkSmartPointer<vtkPolyData> Sphere(double radius)
+{
+  vtkNew<vtkTexturedSphereSource> source;
+  source->SetRadius(radius);
+  source->SetThetaResolution(32);
+  source->SetPhiResolution(16);
+  source->Update();
+  auto sphere = vtkSmartPointer<vtkPolyData>::New();
+  sphere->DeepCopy(source->GetOutput());
+  ReliefScene::TileTextureCoordinates(sphere, 4.0 * radius, 2.0 * radius);
+  return sphere;
+}
+
+std::vector<Sweep> Sweeps(bool quick)
+{
+  auto pick = [&](std::vector<double> all, std::vector<double> few) { return quick ? few : all; };
+  auto square = ReliefScene::Square(4.0);
+  auto stones = Stones(64);
+  std::vector<Sweep> sweeps;
+
+  Sweep angle{ "Error against view angle", "view angle from the normal (degrees)",
+    "sweep_angle.png",
+    "The steeper the view, the longer each ray's run through the relief and the more "
+    "ridges a fixed step passes over; the exact searches stay exact. Within a degree or "
+    "so of edge-on the square is a sliver of pixels and no flat-frame method matches the "
+    "sunken truth.",
+    false };
+  for (double value : pick({ 0, 30, 50, 65, 75, 80, 85, 89 }, { 0, 60, 85 }))
+  {
+    angle.Cases.push_back({ value, square, stones, 0.05, value, 3.0 });
+  }
+  sweeps.push_back(angle);
+
+  Sweep width{ "Error against feature width", "wall width (texels)", "sweep_width.png",
+    "Fixed steps pass through walls narrower than a step's footprint; Linear alone is "
+    "off in depth by up to a step wherever it hits, which wide walls show most.",
+    false };
+  for (double value : pick({ 1, 2, 3, 4, 8 }, { 1, 4 }))
+  {
+    width.Cases.push_back(
+      { value, ReliefScene::Square(1.0), Walls(static_cast<int>(value)), 0.05, 45.0, 3.0 });
+  }
+  sweeps.push_back(width);
+
+  Sweep curvature{ "Error against curvature", "sphere radius (1 / curvature)",
+    "sweep_curvature.png",
+    "On a curved surface the flat frame keeps the polygons' outline (the relief cannot "
+    "carve the silhouette) and measures depth below flat triangles rather than the curved "
+    "surface, whatever the search: what the quadric frame of seed 000 fixes.",
+    true };
+  for (double value : pick({ 0.25, 0.5, 1.0, 2.0 }, { 0.5, 2.0 }))
+  {
+    curvature.Cases.push_back({ value, Sphere(value), stones, 0.03, 0.0, 0.8 });
+  }
+  sweeps.push_back(curvature);
+
+  Sweep depth{ "Error against depth scale", "DepthScale (world units at depth 1)",
+    "sweep_depth.png",
+    "Deeper relief lengthens every ray: fixed step counts fall behind, exact searches "
+    "do not.",
+    false };
+  for (double value : pick({ 0.01, 0.02, 0.05, 0.1, 0.2 }, { 0.01, 0.1 }))
+  {
+    depth.Cases.push_back({ value, square, stones, value, 45.0, 3.0 });
+  }
+  sweeps.push_back(depth);
+  return sweeps;
+}
+
+// The errors of every search method in one case.
+std::vector<Error> Errors(const Case& scene, vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  renderer->RemoveAllViewProps();
+  vtkNew<vtkReliefTextureFilter> relief;
+  relief->SetInputData(scene.Heights);
+  relief->Update();
+  vtkNew<vtkPolyDataMapper> truthMapper;
+  truthMapper->SetInputData(
+    ReliefScene::DisplacedMesh(scene.Surface, relief->GetOutput(), scene.DepthScale, 0.5));
+  auto truth = ReliefScene::ReliefActor(truthMapper, "");
+  vtkNew<vtkOpenGLReliefMapper> mapper;
+  mapper->SetInputData(scene.Surface);
+  mapper->SetHeightMapData(scene.Heights);
+  mapper->SetDepthScale(scene.DepthScale);
+  mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
+  auto reliefActor = ReliefScene::ReliefActor(mapper, "");
+  // framed on the coarse surface alone: the truth's sunken bounds would aim the camera
+  // below the surface, and behind it at grazing angles
+  renderer->AddActor(reliefActor);
+  ReliefScene::ViewSquare(renderer, scene.Angle);
+  renderer->GetActiveCamera()->Dolly(scene.Dolly);
+  renderer->AddActor(truth);
+  renderer->ResetCameraClippingRange();
+
+  reliefActor->VisibilityOff();
+  window->Render();
+  const ReliefMetrics::Capture truthCapture = ReliefScene::Capture(window, renderer);
+  truth->VisibilityOff();
+  reliefActor->VisibilityOn();
+  std::vector<Error> errors;
+  for (int method : ReliefScene::SearchMethods())
+  {
+    mapper->SetSearchMethod(method);
+    window->Render();
+    const ReliefMetrics::Capture capture = ReliefScene::Capture(window, renderer);
+    errors.push_back({ ReliefMetrics::WrongPixelFraction(capture, truthCapture, scene.DepthScale),
+      ReliefMetrics::MeasureDepthError(capture, truthCapture, scene.DepthScale).FractionAbove });
+  }
+  return errors;
+}
+
+std::string Table(const Sweep& sweep, const std::vector<std::vector<Error>>& errors)
+{
+  std::ostringstream table;
+  table << "| " << sweep.Parameter << " |";
+  for (int method : ReliefScene::SearchMethods())
+  {
+    table << " " << vtkOpenGLReliefMapper::GetSearchMethodAsString(method) << " |";
+  }
+  table << "\n| ---: |";
+  for (size_t m = 0; m < ReliefScene::SearchMethods().size(); ++m)
+  {
+    table << " ---: |";
+  }
+  table << "\n" << std::setprecision(3);
+  for (size_t c = 0; c < sweep.Cases.size(); ++c)
+  {
+    table << "| " << sweep.Cases[c].Value << " |";
+    for (const Error& error : errors[c])
+    {
+      table << " " << error.Wrong << " / " << error.WrongDepth << " |";
+    }
+    table << "\n";
+  }
+  return table.str();
+}
+
+// One line per method; methods whose errors are identical in every case share a line
+// (and a legend entry) rather than hide one another.
+void Chart(const Sweep& sweep, const std::vector<std::vector<Error>>& errors, const std::string& file)
+{
+  std::vector<ReliefChart::Series> series;
+  const std::vector<int>& methods = ReliefScene::SearchMethods();
+  for (size_t m = 0; m < methods.size(); ++m)
+  {
+    ReliefChart::Series line{ vtkOpenGLReliefMapper::GetSearchMethodAsString(methods[m]) };
+    line.Line = true;
+    for (size_t c = 0; c < sweep.Cases.size(); ++c)
+    {
+      const Error& error = errors[c][m];
+      line.X.push_back(sweep.Cases[c].Value);
+      line.Y.push_back(std::max(sweep.Silhouettes ? error.Wrong : error.WrongDepth, ErrorFloor));
+    }
+    auto same = std::find_if(series.begin(), series.end(),
+      [&](const ReliefChart::Series& drawn) { return drawn.Y == line.Y; });
+    if (same != series.end())
+    {
+      same->Name += ", " + line.Name;
+    }
+    else
+    {
+      series.push_back(line);
+    }
+  }
+  ReliefChart::Axes axes;
+  axes.Title = sweep.Name;
+  axes.X = sweep.Parameter;
+  axes.Y = sweep.Silhouettes ? "wrong pixels against the ground truth (share)"
+                             : "pixels with a wrong depth (share of those both cover)";
+  axes.LogY = true;
+  axes.YRange[0] = ErrorFloor;
+  axes.YRange[1] = 10.0; // the top decade left to the legend
+  ReliefChart::Write(series, axes, file);
+}
+}
+
+namespace ReliefSweeps
+{
+std::string Run(const Options& options)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  auto renderer = ReliefScene::LitRenderer(window, options.Width, options.Height);
+  if (!options.ImageDirectory.empty())
+  {
+    std::filesystem::create_directories(options.ImageDirectory);
+  }
+  std::ostringstream section;
+  section << "Every search method at its default setting (Linear 10 steps, LinearBinary and "
+             "Secant 10+5, SafetyRadius e = 0), self-shadowing off, against the ground truth "
+             "of each scene (edges of 0.5 texel), in a "
+          << options.Width << "x" << options.Height
+          << " window. Each cell: the share of wrong pixels (as in the table above), then the "
+             "share of the pixels both renders cover whose depth is more than 0.1 DepthScale "
+             "off (the search's own failures, charted unless the sweep is about silhouettes); "
+             "charted at "
+          << ErrorFloor << " when below.\n\n";
+  for (const Sweep& sweep : Sweeps(options.Quick))
+  {
+    std::vector<std::vector<Error>> errors;
+    for (const Case& scene : sweep.Cases)
+    {
+      errors.push_back(Errors(scene, window, renderer));
+    }
+    std::cout << "sweeps: " << sweep.Name << " done\n";
+    section << "### " << sweep.Name << "\n\n" << sweep.Failure << "\n\n" << Table(sweep, errors)
+            << "\n";
+    if (!options.ImageDirectory.empty())
+    {
+      Chart(sweep, errors, options.ImageDirectory + "/" + sweep.File);
+      section << "![" << sweep.Name << "](images/" << sweep.File << ")\n\n";
+    }
+  }
+  return section.str();
+}
+}
