@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace ReliefScene
@@ -227,23 +228,29 @@ int SearchMethodNamed(const std::string& name)
   return -1;
 }
 
-vtkSmartPointer<vtkImageData> ThinFeatures()
+vtkSmartPointer<vtkImageData> HeightImage(int size, const std::function<float(int, int)>& height)
 {
-  constexpr int Size = 64;
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(Size, Size, 1);
+  image->SetDimensions(size, size, 1);
   image->AllocateScalars(VTK_FLOAT, 1);
   auto* heights = static_cast<float*>(image->GetScalarPointer());
-  for (int j = 0; j < Size; ++j)
+  for (int j = 0; j < size; ++j)
   {
-    for (int i = 0; i < Size; ++i)
+    for (int i = 0; i < size; ++i)
     {
-      const bool wall = i % 16 == 8 || (j == 40 && i >= 16 && i < 48);
-      const bool spike = i % 16 == 0 && j % 8 == 4;
-      heights[j * Size + i] = wall || spike ? 1.0f : 0.2f;
+      heights[j * size + i] = height(i, j);
     }
   }
   return image;
+}
+
+vtkSmartPointer<vtkImageData> ThinFeatures()
+{
+  return HeightImage(64, [](int i, int j) {
+    const bool wall = i % 16 == 8 || (j == 40 && i >= 16 && i < 48);
+    const bool spike = i % 16 == 0 && j % 8 == 4;
+    return wall || spike ? 1.0f : 0.2f;
+  });
 }
 
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(

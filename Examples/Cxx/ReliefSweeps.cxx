@@ -70,20 +70,8 @@ vtkSmartPointer<vtkImageData> Stones(int size)
 // both axes, rising from a low floor: seed 002's Fig. 11, feature width as a parameter.
 vtkSmartPointer<vtkImageData> Walls(int width)
 {
-  constexpr int Size = 64;
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(Size, Size, 1);
-  image->AllocateScalars(VTK_FLOAT, 1);
-  auto* heights = static_cast<float*>(image->GetScalarPointer());
-  for (int j = 0; j < Size; ++j)
-  {
-    for (int i = 0; i < Size; ++i)
-    {
-      const bool wall = i % 16 < width || j % 16 < width;
-      heights[j * Size + i] = wall ? 1.0f : 0.2f;
-    }
-  }
-  return image;
+  return ReliefScene::HeightImage(
+    64, [=](int i, int j) { return i % 16 < width || j % 16 < width ? 1.0f : 0.2f; });
 }
 
 // A sphere of `radius` whose texture tiles keep one texel the same world size at every
