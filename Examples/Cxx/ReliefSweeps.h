@@ -1,7 +1,8 @@
 // Stability where methods fail: every search method's error against the ground truth
 // (ReliefAccuracy.h) as one quantity of the scene sweeps through its range: the view
-// angle, the width of thin features, the curvature of the surface under the relief, and
-// the depth scale. One chart per sweep.
+// angle, the width of thin features, the curvature of the surface under the relief
+// (spheres, saddles), the crease angle between faces, and the depth scale. One chart per
+// sweep.
 #ifndef ReliefSweeps_h
 #define ReliefSweeps_h
 

@@ -13,8 +13,9 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 EXPECTED_ROWS = ["ConeStep", "dense mesh", "coarse polygons", "ground truth"]
 FIGURE_COLUMNS = range(2, 13)  # wrong pixels .. GPU MB
 CHARTS = ["accuracy_time.png", "accuracy_samples.png", "sweep_angle.png", "sweep_width.png",
-          "sweep_curvature.png", "sweep_depth.png"]
-SWEEPS = ["view angle", "wall width", "sphere radius", "DepthScale"]
+          "sweep_curvature.png", "sweep_saddle.png", "sweep_crease.png", "sweep_depth.png"]
+SWEEPS = ["view angle", "wall width", "sphere radius", "k of the saddle", "crease angle",
+          "DepthScale"]
 
 
 def fail(message):
