@@ -12,7 +12,6 @@
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefMapper.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkReliefTextureFilter.h"
@@ -24,11 +23,10 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
-#include <tuple>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -145,9 +143,6 @@ std::vector<size_t> ParetoFront(const std::vector<double>& cost, const std::vect
 constexpr const char* TruthFamily = "ground truth";
 constexpr const char* DenseFamily = "dense mesh";
 
-// Errors below this are drawn at it: a log axis has no zero.
-constexpr double ErrorFloor = 1e-6;
-
 // Error (x, log) against a cost (y) for every row with one, each family its colour, the
 // Pareto front as a line; written as PNG.
 void DrawChart(const std::vector<Row>& rows, bool bySamples, const std::string& title,
@@ -165,7 +160,7 @@ void DrawChart(const std::vector<Row>& rows, bool bySamples, const std::string& 
       continue;
     }
     costs.push_back(costOf(row));
-    errors.push_back(std::max(row.WrongPixels, ErrorFloor));
+    errors.push_back(std::max(row.WrongPixels, ReliefChart::LogFloor));
     auto family = std::find_if(series.begin(), series.end(),
       [&](const ReliefChart::Series& s) { return s.Name == row.Family; });
     if (family == series.end())
@@ -434,7 +429,7 @@ std::string Study(const Options& options)
           << " triangles). Wrong pixels: covered by one render and not the other, or more "
              "than 0.1 DepthScale apart in eye depth, as a share of the truth's pixels "
              "(charted at "
-          << ErrorFloor << " when below). Depth errors are in units of DepthScale; "
+          << ReliefChart::LogFloor << " when below). Depth errors are in units of DepthScale; "
           << options.Frames << " timed frames x " << options.Rounds
           << " interleaved rounds per row (median). GPU MB: textures and acceleration image for "
              "relief, vertex and index buffers for meshes.\n\n"

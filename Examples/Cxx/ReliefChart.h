@@ -7,6 +7,9 @@
 
 namespace ReliefChart
 {
+/// Errors below this are drawn at it: a log axis has no zero.
+constexpr double LogFloor = 1e-6;
+
 /// Points or a polyline, in the colour of its place in the list (a black line when
 /// Black is set).
 struct Series

@@ -65,8 +65,6 @@ struct Error
   double WrongDepth;
 };
 
-constexpr double ErrorFloor = 1e-6;
-
 vtkSmartPointer<vtkImageData> Stones(int size)
 {
   vtkNew<vtkImageResize> resize;
@@ -348,7 +346,8 @@ void Chart(const Sweep& sweep, const std::vector<std::vector<Error>>& errors, co
     {
       const Error& error = errors[c][m];
       line.X.push_back(sweep.Cases[c].Value);
-      line.Y.push_back(std::max(sweep.Silhouettes ? error.Wrong : error.WrongDepth, ErrorFloor));
+      const double shown = sweep.Silhouettes ? error.Wrong : error.WrongDepth;
+      line.Y.push_back(std::max(shown, ReliefChart::LogFloor));
     }
     auto same = std::find_if(series.begin(), series.end(),
       [&](const ReliefChart::Series& drawn) { return Indistinguishable(drawn.Y, line.Y); });
@@ -367,7 +366,7 @@ void Chart(const Sweep& sweep, const std::vector<std::vector<Error>>& errors, co
   axes.Y = sweep.Silhouettes ? "wrong pixels against the ground truth (share)"
                              : "pixels with a wrong depth (share of those both cover)";
   axes.LogY = true;
-  axes.YRange[0] = ErrorFloor;
+  axes.YRange[0] = ReliefChart::LogFloor;
   axes.YRange[1] = 10.0; // the top decade left to the legend
   ReliefChart::Write(series, axes, file);
 }
@@ -393,7 +392,7 @@ std::string Run(const Options& options)
              "share of the pixels both renders cover whose depth is more than 0.1 DepthScale "
              "off (the search's own failures, charted unless the sweep is about silhouettes). "
              "Methods within 1% of each other everywhere share a line; errors are charted at "
-          << ErrorFloor << " when below.\n\n";
+          << ReliefChart::LogFloor << " when below.\n\n";
   for (const Sweep& sweep : Sweeps(options.Quick))
   {
     std::vector<std::vector<Error>> errors;

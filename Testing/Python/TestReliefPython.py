@@ -20,8 +20,9 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
 
 import vtkrelief
 from vtkrelief import (vtkConeStepMapFilter, vtkMaximumMipmapFilter, vtkOpenGLReliefMapper,
-                       vtkOpenImageIOReader, vtkReliefTangentFrameFilter,
-                       vtkReliefTextureFilter, vtkSafetyRadiusFilter)
+                       vtkOpenImageIOReader, vtkReliefDisplacementFilter,
+                       vtkReliefTangentFrameFilter, vtkReliefTextureFilter,
+                       vtkSafetyRadiusFilter)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("-D", dest="data", required=True)
@@ -52,7 +53,7 @@ class TestReliefPython(unittest.TestCase):
     def test_classes_come_from_the_package(self):
         for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
                     vtkReliefTangentFrameFilter, vtkMaximumMipmapFilter,
-                    vtkSafetyRadiusFilter, vtkConeStepMapFilter):
+                    vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkReliefDisplacementFilter):
             self.assertIs(getattr(vtkrelief, cls.__name__), cls)
             self.assertEqual(cls().GetClassName(), cls.__name__)
 
@@ -127,6 +128,31 @@ class TestReliefPython(unittest.TestCase):
         # white = high: brick faces (h about 0.8) are shallow, mortar (h < 0.05) deep
         self.assertLess(depth.min(), 0.25)
         self.assertGreater(depth.max(), 0.9)
+
+    def test_displacement_pipeline_makes_the_relief_geometry(self):
+        # reader -> relief texture -> displacement of a plane: what the ground truth is
+        reader = vtkOpenImageIOReader()
+        reader.SetFileName(os.path.join(ARGUMENTS.data, "bricks_height.png"))
+        relief = vtkReliefTextureFilter()
+        relief.SetInputConnection(reader.GetOutputPort())
+        plane = vtkPlaneSource()
+        displacement = vtkReliefDisplacementFilter()
+        displacement.SetInputConnection(plane.GetOutputPort())
+        displacement.SetReliefConnection(relief.GetOutputPort())
+        displacement.SetDepthScale(0.1)
+        displacement.SetMaximumEdgeTexels(8.0)
+        displacement.Update()
+        mesh = displacement.GetOutput()
+        # 512 texels across, edges of at most 8: 7 halvings of the diagonal
+        self.assertEqual(displacement.GetSubdivisionLevels(), 7)
+        self.assertLessEqual(displacement.GetLongestEdgeTexels(), 8.0)
+        heights = vtk_to_numpy(mesh.GetPoints().GetData())[:, 2]
+        # sunk between 0 and DepthScale, mortar deep and brick faces shallow
+        self.assertGreaterEqual(heights.min(), -0.1 - 1e-6)
+        self.assertLessEqual(heights.max(), 1e-6)
+        self.assertLess(heights.min(), -0.09)
+        self.assertGreater(heights.max(), -0.025)
+        self.assertIsNotNone(mesh.GetPointData().GetNormals())
 
 
 class TestSampleCountRender(unittest.TestCase):
