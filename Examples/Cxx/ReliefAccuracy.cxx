@@ -260,7 +260,8 @@ std::string Table(const std::vector<Row>& rows)
   table << "| method | setting | wrong pixels | silhouette error | depth error median | "
            "95th percentile | share above 0.1 | colour RMSE | SSIM | ms/frame | "
            "samples/pixel (mean) | (max) | GPU MB |\n"
-        << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+        << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: "
+           "| ---: | ---: | ---: | ---: | ---: |\n";
   for (const Row& row : rows)
   {
     table << std::setprecision(3) << "| " << row.Family << " | " << row.Parameters << " | "
@@ -275,7 +276,8 @@ std::string Table(const std::vector<Row>& rows)
     else
     {
       table << std::setprecision(3) << row.MeanSamples << " | "
-            << (row.MaximumSamples >= 255 ? std::string(">= 255") : std::to_string(row.MaximumSamples))
+            << (row.MaximumSamples >= 255 ? std::string(">= 255")
+                                          : std::to_string(row.MaximumSamples))
             << " | ";
     }
     table << std::setprecision(3) << row.Megabytes << " |\n";

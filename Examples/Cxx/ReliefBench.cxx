@@ -202,7 +202,8 @@ std::string FiltersTable(int rounds)
   };
   vtkNew<vtkSafetyRadiusFilter> tolerant;
   tolerant->SetErrorTolerance(0.05);
-  const Case cases[] = { { "vtkMaximumMipmapFilter", vtkSmartPointer<vtkMaximumMipmapFilter>::New(), 1024 },
+  const Case cases[] = {
+    { "vtkMaximumMipmapFilter", vtkSmartPointer<vtkMaximumMipmapFilter>::New(), 1024 },
     { "vtkSafetyRadiusFilter (e = 0)", vtkSmartPointer<vtkSafetyRadiusFilter>::New(), 512 },
     { "vtkSafetyRadiusFilter (e = 0.05)", tolerant.Get(), 512 },
     { "vtkConeStepMapFilter", vtkSmartPointer<vtkConeStepMapFilter>::New(), 512 } };
@@ -418,9 +419,10 @@ int main(int argc, char* argv[])
     table << "| configuration | ms/frame (median) | x plain | ms/frame (fastest) | x plain | "
              "samples/pixel (mean) |\n"
           << "| --- | ---: | ---: | ---: | ---: | ---: |\n";
-    const double plainMedian = ReliefScene::Median(configurations[0].Milliseconds);
+    const std::vector<double>& plainMilliseconds = configurations[0].Milliseconds;
+    const double plainMedian = ReliefScene::Median(plainMilliseconds);
     const double plainFastest =
-      *std::min_element(configurations[0].Milliseconds.begin(), configurations[0].Milliseconds.end());
+      *std::min_element(plainMilliseconds.begin(), plainMilliseconds.end());
     for (const Configuration& configuration : configurations)
     {
       const double median = ReliefScene::Median(configuration.Milliseconds);

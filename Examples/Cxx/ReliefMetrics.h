@@ -16,7 +16,8 @@ struct Capture
   int Width = 0;
   int Height = 0;
   std::vector<float> Rgb;      ///< 3 per pixel, in [0, 1]
-  std::vector<float> EyeDepth; ///< distance in front of the camera; +infinity where nothing is drawn
+  /// distance in front of the camera; +infinity where nothing is drawn
+  std::vector<float> EyeDepth;
 
   bool Covers(std::size_t pixel) const { return this->EyeDepth[pixel] < 1e30f; }
 };

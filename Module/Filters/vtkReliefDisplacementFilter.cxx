@@ -88,7 +88,8 @@ void Displace(vtkPolyData* mesh, const vtkReliefDepthImage& field, double depthS
         BilinearDepth(field, tcoords->GetComponent(id, 0), tcoords->GetComponent(id, 1));
       double point[3];
       points->GetPoint(id, point);
-      const glm::dvec3 moved = glm::dvec3(point[0], point[1], point[2]) - n * (depth * depthScale / length);
+      const glm::dvec3 moved =
+        glm::dvec3(point[0], point[1], point[2]) - n * (depth * depthScale / length);
       points->SetPoint(id, moved.x, moved.y, moved.z);
     }
   });

@@ -89,7 +89,8 @@ TEST(ReliefDisplacementFilter, SubdividesUntilEveryEdgeSpansAtMostTheAskedTexels
 {
   vtkNew<vtkReliefDisplacementFilter> filter;
   filter->SetMaximumEdgeTexels(0.5);
-  vtkPolyData* mesh = Displace(filter, UnitSquare(), DepthImage(8, 8, [](int, int) { return 0.0; }));
+  vtkPolyData* mesh =
+    Displace(filter, UnitSquare(), DepthImage(8, 8, [](int, int) { return 0.0; }));
   // the diagonal spans 8 sqrt(2) texels: 5 halvings bring it under 0.5, 4 do not
   EXPECT_EQ(filter->GetSubdivisionLevels(), 5);
   EXPECT_EQ(mesh->GetNumberOfPolys(), 2 << 10);
@@ -194,7 +195,8 @@ TEST(ReliefDisplacementFilter, CurvedMeshesSinkAlongTheirInterpolatedNormals)
   {
     double point[3];
     mesh->GetPoint(id, point);
-    const double radius = std::sqrt(point[0] * point[0] + point[1] * point[1] + point[2] * point[2]);
+    const double radius =
+      std::sqrt(point[0] * point[0] + point[1] * point[1] + point[2] * point[2]);
     ASSERT_LE(radius, 0.75 + 1e-6);
     ASSERT_GE(radius, 0.75 - sag - 1e-6);
   }

@@ -44,7 +44,8 @@ TEST(ReliefMetrics, CoverageDifferenceCountsPixelsOneCoversAndTheOtherDoesNot)
   EXPECT_EQ(ReliefMetrics::CoverageDifference(Rectangle(10, 12), Rectangle(10, 10)), 20);
   EXPECT_EQ(ReliefMetrics::CoverageDifference(Rectangle(10, 10), Rectangle(10, 10)), 0);
   // depth does not matter, only whether something is drawn
-  const Capture nearer = Make(32, 32, [](int x, int y) { return x < 10 && y < 10 ? 1.0f : Nothing; });
+  const Capture nearer =
+    Make(32, 32, [](int x, int y) { return x < 10 && y < 10 ? 1.0f : Nothing; });
   EXPECT_EQ(ReliefMetrics::CoverageDifference(nearer, Rectangle(10, 10)), 0);
 }
 
