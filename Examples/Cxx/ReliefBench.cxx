@@ -282,6 +282,12 @@ int main(int argc, char* argv[])
     }
     else
     {
+      if (std::strcmp(argv[i], "--help"))
+      {
+        std::cerr << "relief bench: cannot use '" << argv[i] << "'"
+                  << (i + 1 < argc ? std::string(" '") + argv[i + 1] + "'" : std::string())
+                  << "\n";
+      }
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
                    "                      filters, accuracy, sweeps)\n"
@@ -298,6 +304,12 @@ int main(int argc, char* argv[])
     }
   }
 
+  if (!only.empty() && !report.empty())
+  {
+    std::cerr << "relief bench: --report writes every timing table; run it without --only "
+                 "(--results may go with --only accuracy,sweeps).\n";
+    return 2;
+  }
   if (quick)
   {
     frames = std::min(frames, 3);
@@ -367,6 +379,7 @@ int main(int argc, char* argv[])
   const std::string filtersTable = wanted("filters") ? FiltersTable(rounds) : "(not run)\n";
   ReliefAccuracy::Options accuracy;
   accuracy.Method = method;
+  accuracy.Frames = std::max(1, frames / 2); // per round, two rounds
   if (quick)
   {
     accuracy.HeightMapSize = 32;

@@ -84,8 +84,13 @@ void Displace(vtkPolyData* mesh, const vtkReliefDepthImage& field, double depthS
       {
         continue; // a point of degenerate triangles only: no direction to move it in
       }
-      const double depth =
-        BilinearDepth(field, tcoords->GetComponent(id, 0), tcoords->GetComponent(id, 1));
+      const double u = tcoords->GetComponent(id, 0);
+      const double v = tcoords->GetComponent(id, 1);
+      if (!std::isfinite(u) || !std::isfinite(v) || std::abs(u) > 1e6 || std::abs(v) > 1e6)
+      {
+        continue; // no texel to read: the point stays on the surface
+      }
+      const double depth = BilinearDepth(field, u, v);
       double point[3];
       points->GetPoint(id, point);
       const glm::dvec3 moved =
@@ -153,6 +158,13 @@ int vtkReliefDisplacementFilter::RequestData(
   triangles->PassLinesOff();
   triangles->Update();
   vtkSmartPointer<vtkPolyData> mesh = triangles->GetOutput();
+  if (mesh->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("The mesh has no polygons, so the relief has no surface to sink; the "
+                  "output is the mesh unchanged. Give it polygons or triangle strips.");
+    output->ShallowCopy(input);
+    return 1;
+  }
   if (!mesh->GetPointData()->GetNormals())
   {
     vtkNew<vtkPolyDataNormals> normals;
@@ -167,9 +179,11 @@ int vtkReliefDisplacementFilter::RequestData(
   int levels = longest > this->MaximumEdgeTexels
     ? static_cast<int>(std::ceil(std::log2(longest / this->MaximumEdgeTexels)))
     : 0;
-  const vtkIdType cells = std::max<vtkIdType>(mesh->GetNumberOfPolys(), 1);
+  const vtkIdType cells = mesh->GetNumberOfPolys();
   int affordable = 0;
-  while (cells << (2 * (affordable + 1)) <= this->MaximumNumberOfTriangles && affordable < 30)
+  // compared by shifting the cap down, so that a cap near VTK_ID_MAX cannot overflow
+  const vtkIdType cap = this->MaximumNumberOfTriangles;
+  while (affordable < 30 && cells <= (cap >> (2 * (affordable + 1))))
   {
     ++affordable;
   }
@@ -196,6 +210,13 @@ int vtkReliefDisplacementFilter::RequestData(
   this->LongestEdgeTexels = std::ldexp(longest, -levels);
   this->UpdateProgress(0.6);
 
+  // the triangle and subdivision filters may hand on the input's own points: move a copy
+  auto moved = vtkSmartPointer<vtkPolyData>::New();
+  moved->ShallowCopy(mesh);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->DeepCopy(mesh->GetPoints());
+  moved->SetPoints(points);
+  mesh = moved;
   Displace(mesh, field, this->DepthScale);
   this->UpdateProgress(0.8);
 

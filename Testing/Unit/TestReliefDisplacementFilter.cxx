@@ -3,6 +3,7 @@
 #include "ReliefEventRecorder.h"
 #include "vtkReliefDisplacementFilter.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -32,7 +33,8 @@ vtkSmartPointer<vtkPolyData> UnitSquare()
   return plane->GetOutput();
 }
 
-// A one-component depth image, depth(i, j) at texel (i, j).
+// A depth image, depth(i, j) at texel (i, j) in every component (a component count of 4
+// lays it out as vtkReliefTextureFilter does: a +z normal first, the depth last).
 vtkSmartPointer<vtkImageData> DepthImage(
   int width, int height, const std::function<double(int, int)>& depth, int components = 1)
 {
@@ -47,7 +49,9 @@ vtkSmartPointer<vtkImageData> DepthImage(
     {
       for (int c = 0; c < components; ++c)
       {
-        values->SetComponent(static_cast<vtkIdType>(j) * width + i, c, depth(i, j));
+        const bool normal = components == 4 && c < 3;
+        values->SetComponent(static_cast<vtkIdType>(j) * width + i, c,
+          normal ? (c == 2 ? 1.0 : 0.0) : depth(i, j));
       }
     }
   }
@@ -122,14 +126,86 @@ TEST(ReliefDisplacementFilter, PointsSinkByTheBilinearDepthBetweenTexelCentres)
     }
     else
     {
-      // between the last centre and the first (wrapped): deeper than the first, shallower
-      // than the last
-      EXPECT_LE(point[2], -0.1 * 0.5 / width + 1e-6);
-      EXPECT_GE(point[2], -0.1 * (1.0 - 0.5 / width) - 1e-6);
+      // between the last centre and the first, wrapped round: the two blend, so the edge
+      // (u = 0 or 1, half-way between them) is at their mean depth 0.5
+      const double edgeDistance = std::min(u, 1.0 - u) * width; // texels from the edge
+      const double first = 0.5 / width;
+      const double last = 1.0 - 0.5 / width;
+      const double weightOfFirst = u < 0.5 ? 0.5 + edgeDistance : 0.5 - edgeDistance;
+      EXPECT_NEAR(point[2], -0.1 * (weightOfFirst * first + (1.0 - weightOfFirst) * last), 1e-6)
+        << "at u = " << u;
     }
     EXPECT_NEAR(point[0], u, 1e-6) << "points move along the normal only";
   }
   EXPECT_GT(inside, 100);
+}
+
+TEST(ReliefDisplacementFilter, TexelCentresAlongVOfANonSquareImage)
+{
+  // 4 x 16 texels, depth rising along v only: depth = v between the first and last rows'
+  // centres, whatever u
+  vtkNew<vtkReliefDisplacementFilter> filter;
+  filter->SetDepthScale(0.1);
+  filter->SetMaximumEdgeTexels(1.0);
+  vtkPolyData* mesh =
+    Displace(filter, UnitSquare(), DepthImage(4, 16, [](int, int j) { return (j + 0.5) / 16; }));
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  int inside = 0;
+  for (vtkIdType id = 0; id < mesh->GetNumberOfPoints(); ++id)
+  {
+    const double v = tcoords->GetComponent(id, 1);
+    if (v >= 0.5 / 16 && v <= 1.0 - 0.5 / 16)
+    {
+      double point[3];
+      mesh->GetPoint(id, point);
+      EXPECT_NEAR(point[2], -0.1 * v, 1e-6) << "at v = " << v;
+      ++inside;
+    }
+  }
+  EXPECT_GT(inside, 100);
+}
+
+TEST(ReliefDisplacementFilter, LeavesItsInputUntouchedAndRepeatsItself)
+{
+  // fine enough already: no subdivision, the case where points could be shared
+  auto square = UnitSquare();
+  double before[3];
+  square->GetPoint(0, before);
+  vtkNew<vtkReliefDisplacementFilter> filter;
+  filter->SetMaximumEdgeTexels(100.0);
+  filter->SetDepthScale(0.1);
+  auto relief = DepthImage(4, 4, [](int, int) { return 1.0; });
+  Displace(filter, square, relief);
+  ASSERT_EQ(filter->GetSubdivisionLevels(), 0);
+  double after[3];
+  square->GetPoint(0, after);
+  EXPECT_EQ(after[2], before[2]);
+  filter->SetDepthScale(0.2);
+  vtkPolyData* mesh = Displace(filter, square, relief);
+  double moved[3];
+  mesh->GetPoint(0, moved);
+  EXPECT_NEAR(moved[2], before[2] - 0.2, 1e-7);
+  square->GetPoint(0, after);
+  EXPECT_EQ(after[2], before[2]);
+}
+
+TEST(ReliefDisplacementFilter, MeshWithoutPolygonsIsAnErrorAndPassesThrough)
+{
+  auto square = UnitSquare();
+  auto lines = vtkSmartPointer<vtkPolyData>::New();
+  lines->SetPoints(square->GetPoints());
+  lines->GetPointData()->ShallowCopy(square->GetPointData());
+  vtkNew<vtkCellArray> line;
+  const vtkIdType ids[2] = { 0, 1 };
+  line->InsertNextCell(2, ids);
+  lines->SetLines(line);
+  vtkNew<vtkReliefDisplacementFilter> filter;
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
+  vtkPolyData* mesh = Displace(filter, lines, DepthImage(4, 4, [](int, int) { return 1.0; }));
+  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
+  EXPECT_TRUE(recorder->AnyMessageContains("no polygons"));
+  EXPECT_EQ(mesh->GetNumberOfLines(), 1);
 }
 
 TEST(ReliefDisplacementFilter, NormalsAreThoseOfTheDisplacedSurface)
