@@ -6,18 +6,16 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkConeStepMapFilter.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
-#include "vtkMaximumMipmapFilter.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkReliefAccelerationFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSafetyRadiusFilter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -91,20 +89,10 @@ struct Row
 // Megabytes of the acceleration image a search method reads (0 for none).
 double AccelerationMegabytes(int method, vtkImageData* relief)
 {
-  vtkSmartPointer<vtkReliefAccelerationFilter> filter;
-  switch (method)
+  auto filter = vtk::TakeSmartPointer(vtkOpenGLReliefMapper::NewAccelerationFilter(method));
+  if (!filter)
   {
-    case vtkOpenGLReliefMapper::SAFETY_RADIUS:
-      filter = vtkSmartPointer<vtkSafetyRadiusFilter>::New();
-      break;
-    case vtkOpenGLReliefMapper::CONE_STEP:
-      filter = vtkSmartPointer<vtkConeStepMapFilter>::New();
-      break;
-    case vtkOpenGLReliefMapper::MAXIMUM_MIPMAP:
-      filter = vtkSmartPointer<vtkMaximumMipmapFilter>::New();
-      break;
-    default:
-      return 0.0;
+    return 0.0;
   }
   int size[2];
   filter->GetOutputSize(relief->GetDimensions()[0], relief->GetDimensions()[1], size);

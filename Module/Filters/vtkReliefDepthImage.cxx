@@ -49,3 +49,18 @@ bool vtkReliefDepthImage::Read(vtkImageData* image, std::string& error)
   }
   return true;
 }
+
+double vtkReliefDepthImage::Interpolate(double u, double v) const
+{
+  const double x = u * this->Width - 0.5;
+  const double y = v * this->Height - 0.5;
+  const double i = std::floor(x);
+  const double j = std::floor(y);
+  const double fx = x - i;
+  const double fy = y - j;
+  const int i0 = static_cast<int>(i);
+  const int j0 = static_cast<int>(j);
+  const double bottom = (1.0 - fx) * this->At(i0, j0) + fx * this->At(i0 + 1, j0);
+  const double top = (1.0 - fx) * this->At(i0, j0 + 1) + fx * this->At(i0 + 1, j0 + 1);
+  return (1.0 - fy) * bottom + fy * top;
+}

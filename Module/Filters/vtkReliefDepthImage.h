@@ -36,6 +36,10 @@ public:
     j += j < 0 ? this->Height : 0;
     return this->Depths[static_cast<size_t>(j) * this->Width + i];
   }
+
+  /// The bilinear field between texel centres (what GL_LINEAR returns, in double) at
+  /// texture coordinate (u, v), repeating; u and v must be finite.
+  double Interpolate(double u, double v) const;
 };
 
 #endif

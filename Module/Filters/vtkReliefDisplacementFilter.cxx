@@ -28,22 +28,6 @@ vtkStandardNewMacro(vtkReliefDisplacementFilter);
 
 namespace
 {
-// The bilinear field between texel centres at texture coordinate (u, v), repeating.
-double BilinearDepth(const vtkReliefDepthImage& field, double u, double v)
-{
-  const double x = u * field.Width - 0.5;
-  const double y = v * field.Height - 0.5;
-  const double i = std::floor(x);
-  const double j = std::floor(y);
-  const double fx = x - i;
-  const double fy = y - j;
-  const int i0 = static_cast<int>(i);
-  const int j0 = static_cast<int>(j);
-  const double bottom = (1.0 - fx) * field.At(i0, j0) + fx * field.At(i0 + 1, j0);
-  const double top = (1.0 - fx) * field.At(i0, j0 + 1) + fx * field.At(i0 + 1, j0 + 1);
-  return (1.0 - fy) * bottom + fy * top;
-}
-
 // The longest triangle edge of `mesh`, in texels of a width x height image.
 double LongestEdgeInTexels(vtkPolyData* mesh, double width, double height)
 {
@@ -90,7 +74,7 @@ void Displace(vtkPolyData* mesh, const vtkReliefDepthImage& field, double depthS
       {
         continue; // no texel to read: the point stays on the surface
       }
-      const double depth = BilinearDepth(field, u, v);
+      const double depth = field.Interpolate(u, v);
       double point[3];
       points->GetPoint(id, point);
       const glm::dvec3 moved =

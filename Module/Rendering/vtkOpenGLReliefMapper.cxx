@@ -450,20 +450,21 @@ bool NeedsAcceleration(int method)
   return method == vtkOpenGLReliefMapper::SAFETY_RADIUS ||
     method == vtkOpenGLReliefMapper::CONE_STEP || method == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP;
 }
+}
 
-// The filter whose output a method that needs acceleration reads.
-vtkSmartPointer<vtkReliefAccelerationFilter> NewAccelerationFilter(int method)
+vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter(int method)
 {
   switch (method)
   {
-    case vtkOpenGLReliefMapper::SAFETY_RADIUS:
-      return vtkSmartPointer<vtkSafetyRadiusFilter>::New();
-    case vtkOpenGLReliefMapper::CONE_STEP:
-      return vtkSmartPointer<vtkConeStepMapFilter>::New();
+    case SAFETY_RADIUS:
+      return vtkSafetyRadiusFilter::New();
+    case CONE_STEP:
+      return vtkConeStepMapFilter::New();
+    case MAXIMUM_MIPMAP:
+      return vtkMaximumMipmapFilter::New();
     default:
-      return vtkSmartPointer<vtkMaximumMipmapFilter>::New();
+      return nullptr;
   }
-}
 }
 
 void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
@@ -512,7 +513,7 @@ vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
   // only the image the chosen method reads, rebuilt only when its input or settings change
   if (!this->AccelerationFilter || this->AccelerationFilterMethod != this->SearchMethod)
   {
-    this->AccelerationFilter = NewAccelerationFilter(this->SearchMethod);
+    this->AccelerationFilter = vtk::TakeSmartPointer(NewAccelerationFilter(this->SearchMethod));
     this->AccelerationFilterMethod = this->SearchMethod;
     this->AccelerationFilter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
     this->AccelerationFilter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
@@ -531,7 +532,7 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
   int relief[3];
   this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
   // what the method's own filter would make of this height map
-  vtkSmartPointer<vtkReliefAccelerationFilter> producer = NewAccelerationFilter(this->SearchMethod);
+  auto producer = vtk::TakeSmartPointer(NewAccelerationFilter(this->SearchMethod));
   int expected[2];
   producer->GetOutputSize(relief[0], relief[1], expected);
   const int components = producer->GetOutputComponents();

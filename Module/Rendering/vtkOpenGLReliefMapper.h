@@ -29,7 +29,8 @@
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkReliefRenderingModule.h"
-#include "vtkSmartPointer.h" // for AccelerationFilter
+#include "vtkSmartPointer.h"  // for AccelerationFilter
+#include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
 class vtkCallbackCommand;
 class vtkImageData;
@@ -112,6 +113,13 @@ public:
   void SetAccelerationData(vtkImageData* image);
   vtkImageData* GetAcceleration();
   ///@}
+
+  /**
+   * A new instance of the filter that makes the acceleration image `method` reads
+   * (vtkSafetyRadiusFilter, vtkConeStepMapFilter or vtkMaximumMipmapFilter), or nullptr
+   * for a method that reads none. The caller owns it.
+   */
+  VTK_NEWINSTANCE static vtkReliefAccelerationFilter* NewAccelerationFilter(int method);
 
   ///@{
   /**

@@ -71,6 +71,18 @@ class TestReliefPython(unittest.TestCase):
         self.assertEqual(len(errors.messages), 1)
         self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.LINEAR_BINARY)
 
+    def test_each_method_names_the_filter_of_its_acceleration_image(self):
+        expected = {vtkOpenGLReliefMapper.SAFETY_RADIUS: vtkSafetyRadiusFilter,
+                    vtkOpenGLReliefMapper.CONE_STEP: vtkConeStepMapFilter,
+                    vtkOpenGLReliefMapper.MAXIMUM_MIPMAP: vtkMaximumMipmapFilter}
+        for method in range(7):
+            made = vtkOpenGLReliefMapper.NewAccelerationFilter(method)
+            if method in expected:
+                self.assertIsInstance(made, expected[method])
+                self.assertEqual(made.GetReferenceCount(), 1)  # ours alone: no leak
+            else:
+                self.assertIsNone(made)
+
     def test_step_counts_are_clamped_with_a_warning(self):
         mapper = vtkOpenGLReliefMapper()
         warnings = MessageRecorder(mapper, vtkCommand.WarningEvent)

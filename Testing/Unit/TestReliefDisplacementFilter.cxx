@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 namespace
 {
@@ -65,6 +66,19 @@ vtkPolyData* Displace(vtkReliefDisplacementFilter* filter, vtkPolyData* mesh, vt
   filter->SetReliefData(relief);
   filter->Update();
   return filter->GetOutput();
+}
+
+// Displaces `mesh` by `relief` with a new filter, expecting exactly one error that
+// mentions `text`; the output (owned by `filter`).
+vtkPolyData* DisplaceWithOneError(vtkReliefDisplacementFilter* filter, vtkPolyData* mesh,
+  vtkImageData* relief, const std::string& text)
+{
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
+  vtkPolyData* output = Displace(filter, mesh, relief);
+  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
+  EXPECT_TRUE(recorder->AnyMessageContains(text)) << "no error mentions " << text;
+  return output;
 }
 
 double LongestEdgeInTexels(vtkPolyData* mesh, int width, int height)
@@ -200,11 +214,8 @@ TEST(ReliefDisplacementFilter, MeshWithoutPolygonsIsAnErrorAndPassesThrough)
   line->InsertNextCell(2, ids);
   lines->SetLines(line);
   vtkNew<vtkReliefDisplacementFilter> filter;
-  vtkNew<ReliefEventRecorder> recorder;
-  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
-  vtkPolyData* mesh = Displace(filter, lines, DepthImage(4, 4, [](int, int) { return 1.0; }));
-  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
-  EXPECT_TRUE(recorder->AnyMessageContains("no polygons"));
+  vtkPolyData* mesh = DisplaceWithOneError(
+    filter, lines, DepthImage(4, 4, [](int, int) { return 1.0; }), "no polygons");
   EXPECT_EQ(mesh->GetNumberOfLines(), 1);
 }
 
@@ -297,11 +308,8 @@ TEST(ReliefDisplacementFilter, MeshWithoutTextureCoordinatesIsAnErrorAndPassesTh
   auto square = UnitSquare();
   square->GetPointData()->SetTCoords(nullptr);
   vtkNew<vtkReliefDisplacementFilter> filter;
-  vtkNew<ReliefEventRecorder> recorder;
-  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
-  vtkPolyData* mesh = Displace(filter, square, DepthImage(4, 4, [](int, int) { return 1.0; }));
-  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
-  EXPECT_TRUE(recorder->AnyMessageContains("vtkTextureMapToPlane"));
+  vtkPolyData* mesh = DisplaceWithOneError(
+    filter, square, DepthImage(4, 4, [](int, int) { return 1.0; }), "vtkTextureMapToPlane");
   EXPECT_EQ(mesh->GetNumberOfPoints(), square->GetNumberOfPoints());
   EXPECT_EQ(mesh->GetNumberOfPolys(), square->GetNumberOfPolys());
 }
@@ -310,12 +318,8 @@ TEST(ReliefDisplacementFilter, ReliefWithoutDepthsIsAnErrorAndPassesTheMeshThrou
 {
   auto square = UnitSquare();
   vtkNew<vtkReliefDisplacementFilter> filter;
-  vtkNew<ReliefEventRecorder> recorder;
-  filter->AddObserver(vtkCommand::ErrorEvent, recorder);
-  vtkPolyData* mesh =
-    Displace(filter, square, DepthImage(4, 4, [](int, int) { return 1.0; }, 3));
-  EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
-  EXPECT_TRUE(recorder->AnyMessageContains("vtkReliefTextureFilter"));
+  vtkPolyData* mesh = DisplaceWithOneError(
+    filter, square, DepthImage(4, 4, [](int, int) { return 1.0; }, 3), "vtkReliefTextureFilter");
   EXPECT_EQ(mesh->GetNumberOfPoints(), square->GetNumberOfPoints());
 }
 
