@@ -29,7 +29,9 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -250,16 +252,32 @@ std::vector<Sweep> Sweeps(bool quick)
 }
 
 // The errors of every search method in one case.
-std::vector<Error> Errors(const Case& scene, vtkRenderWindow* window, vtkRenderer* renderer)
+// The ground truths built so far, by surface, height map and depth scale: the cases of
+// the view-angle sweep share one, of millions of triangles.
+using TruthKey = std::tuple<vtkPolyData*, vtkImageData*, double>;
+using Truths = std::map<TruthKey, vtkSmartPointer<vtkPolyData>>;
+
+vtkPolyData* TruthOf(const Case& scene, Truths& truths)
+{
+  vtkPolyData* surface = scene.Fine ? scene.Fine : scene.Surface;
+  vtkSmartPointer<vtkPolyData>& truth =
+    truths[TruthKey(surface, scene.Heights, scene.DepthScale)];
+  if (!truth)
+  {
+    vtkNew<vtkReliefTextureFilter> relief;
+    relief->SetInputData(scene.Heights);
+    relief->Update();
+    truth = ReliefScene::DisplacedMesh(surface, relief->GetOutput(), scene.DepthScale, 0.5);
+  }
+  return truth;
+}
+
+std::vector<Error> Errors(
+  const Case& scene, vtkRenderWindow* window, vtkRenderer* renderer, Truths& truths)
 {
   renderer->RemoveAllViewProps();
-  vtkNew<vtkReliefTextureFilter> relief;
-  relief->SetInputData(scene.Heights);
-  relief->Update();
   vtkNew<vtkPolyDataMapper> truthMapper;
-  truthMapper->SetInputData(
-    ReliefScene::DisplacedMesh(scene.Fine ? scene.Fine : scene.Surface, relief->GetOutput(),
-      scene.DepthScale, 0.5));
+  truthMapper->SetInputData(TruthOf(scene, truths));
   auto truth = ReliefScene::ReliefActor(truthMapper, "");
   vtkNew<vtkOpenGLReliefMapper> mapper;
   mapper->SetInputData(scene.Surface);
@@ -394,12 +412,13 @@ std::string Run(const Options& options)
              "off (the search's own failures, charted unless the sweep is about silhouettes). "
              "Methods within 1% of each other everywhere share a line; errors are charted at "
           << ReliefChart::LogFloor << " when below.\n\n";
+  Truths truths;
   for (const Sweep& sweep : Sweeps(options.Quick))
   {
     std::vector<std::vector<Error>> errors;
     for (const Case& scene : sweep.Cases)
     {
-      errors.push_back(Errors(scene, window, renderer));
+      errors.push_back(Errors(scene, window, renderer, truths));
     }
     std::cout << "sweeps: " << sweep.Name << " done\n";
     section << "### " << sweep.Name << "\n\n" << sweep.Failure << "\n\n" << Table(sweep, errors)
