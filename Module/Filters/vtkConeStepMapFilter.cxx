@@ -749,6 +749,28 @@ double vtkConeStepMapFilter::GetMaximumRatio(int width, int height)
   return 4.0 * std::max(width, height);
 }
 
+void vtkConeStepMapFilter::EncodeCone(
+  double top, double ratio, double maximumRatio, unsigned char code[2])
+{
+  // 1e-6 below the top: a GPU's unorm conversion may round code / 255 up by an ulp
+  code[0] = static_cast<unsigned char>(std::clamp(std::floor((top - 1e-6) * 255.0), 0.0, 255.0));
+  const double bound = RatioSafety * ratio;
+  auto decoded = [&](int level) {
+    return maximumRatio * std::exp2(RATIO_OCTAVES * (level - 255.0) / 254.0);
+  };
+  int level = 0;
+  if (bound > 0.0 && maximumRatio > 0.0)
+  {
+    const double exact = 255.0 + 254.0 * std::log2(bound / maximumRatio) / RATIO_OCTAVES;
+    level = static_cast<int>(std::clamp(std::floor(exact), 0.0, 255.0));
+    while (level > 0 && decoded(level) > bound)
+    {
+      --level;
+    }
+  }
+  code[1] = static_cast<unsigned char>(level);
+}
+
 void vtkConeStepMapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArray* output)
 {
   const int width = field.Width;

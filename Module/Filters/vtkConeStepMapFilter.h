@@ -61,6 +61,12 @@
  * one-component depth image; anything else gives an error and an empty output. Output:
  * a VTK_FLOAT image of the input's size, scalars "ConeStep", two components per cell
  * (i, j): its top T and its ratio w.
+ *
+ * On the GPU each cell takes two bytes (EncodeCone): the top rounded up toward the
+ * surface to a multiple of 1/255, and the ratio rounded down to one of 255 levels
+ * spaced evenly in log2 over the RATIO_OCTAVES octaves below the maximum ratio (4.5%
+ * apart), or 0 below them. A higher apex and a narrower cone lie inside the proven
+ * cone, so the decoded map keeps the guarantee; the search only takes a few more steps.
  */
 #ifndef vtkConeStepMapFilter_h
 #define vtkConeStepMapFilter_h
@@ -79,6 +85,21 @@ public:
 
   /// The largest ratio stored for a width x height map: 4 max(width, height).
   static double GetMaximumRatio(int width, int height);
+
+  /// Octaves of ratio below the maximum that the 8-bit ratio codes span.
+  enum
+  {
+    RATIO_OCTAVES = 16
+  };
+
+  /**
+   * The two bytes a cell's (top, ratio) is uploaded as, both rounded conservatively:
+   * code[0] / 255 <= top (strictly below it for top > 0) and
+   * maximumRatio * 2^(RATIO_OCTAVES (code[1] - 255) / 254) <= ratio, a relative 1e-5
+   * to spare for a GPU's exp2 (code[1] = 0: ratio 0). vtkReliefConeSearch.glsl's
+   * reliefConeDecode() reads them back.
+   */
+  static void EncodeCone(double top, double ratio, double maximumRatio, unsigned char code[2]);
 
 protected:
   vtkConeStepMapFilter();

@@ -175,7 +175,10 @@ struct DepthWorker
           const double level = std::min(1.0, std::max(0.0, (value - low) * scale));
           depth = heightConvention ? 1.0 - level : level;
         }
-        texel[3] = static_cast<float>(depth);
+        // on the grid of the mapper's 16-bit depth texture, which then holds it exactly
+        texel[3] = static_cast<float>(
+          std::round(depth * vtkReliefTextureFilter::DEPTH_LEVELS) /
+          vtkReliefTextureFilter::DEPTH_LEVELS);
         texel += 4;
       }
     };

@@ -10,7 +10,11 @@
  * Depth lies in [0, 1]: 0 at the surface (the highest height), 1 deepest.
  * Integer inputs are normalized by the range of their type, so absolute levels
  * survive and a 16-bit map keeps its 65536 levels; float inputs by the range of
- * their finite values (a constant image is flat, depth 0). By default white is
+ * their finite values (a constant image is flat, depth 0). Depths are then
+ * rounded to the nearest k / DEPTH_LEVELS (65535), the levels of the 16-bit
+ * texture the mappers search, so that the searched field, the acceleration
+ * images built from this output and any geometry displaced by it agree exactly;
+ * 8- and 16-bit inputs lose nothing, float inputs at most 7.7e-6 of the depth. By default white is
  * high (InputConvention Height); SetInputConventionToDepth() reads white as
  * deep. Non-finite heights are replaced (+Inf by the highest level, -Inf and
  * NaN by the lowest) with one warning.
@@ -47,6 +51,12 @@ public:
   static vtkReliefTextureFilter* New();
   vtkTypeMacro(vtkReliefTextureFilter, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The depth levels of the output: depths are multiples of 1 / DEPTH_LEVELS.
+  enum
+  {
+    DEPTH_LEVELS = 65535
+  };
 
   enum InputConventions
   {

@@ -24,9 +24,12 @@
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
 #include "vtkSafetyRadiusFilter.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnsignedShortArray.h"
 #include "vtk_glew.h"
 
 #include "vtkReliefCommon.h"
@@ -60,17 +63,33 @@ constexpr const char* TangentAttribute = "reliefTangentMC";
 constexpr const char* TCoordAttribute = "reliefTCoordMC";
 constexpr const char* TextureScaleAttribute = "reliefTextureScaleMC";
 
-// A repeating, trilinearly filtered 2D texture of `values` in `internalFormat`.
+// Bytes of a w x h texture of `texelBytes` a texel with all its mipmap levels.
+vtkIdType MipmappedBytes(int width, int height, int texelBytes)
+{
+  vtkIdType bytes = 0;
+  for (int level = 0; width >> level > 0 || height >> level > 0; ++level)
+  {
+    bytes += static_cast<vtkIdType>(std::max(width >> level, 1)) * std::max(height >> level, 1);
+  }
+  return bytes * texelBytes;
+}
+
+// A repeating, trilinearly filtered 2D texture of `values` (one or two components) in
+// `internalFormat`.
 bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
   const int dimensions[3], vtkDataArray* values, unsigned int internalFormat)
 {
+  const int components = values->GetNumberOfComponents();
   texture->SetContext(window);
+  // vtkTextureObject keeps the formats and data type of an earlier upload
+  texture->ResetFormatAndType();
   texture->SetInternalFormat(internalFormat);
+  texture->SetFormat(components == 1 ? GL_RED : GL_RG);
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
   texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
   texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], values->GetNumberOfComponents(),
+  if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
         values->GetDataType(), values->GetVoidPointer(0)))
   {
     return false;
@@ -82,24 +101,43 @@ bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wi
   return true;
 }
 
-// A float texture the searches read texel by texel (nearest filtering): the image as it is.
-bool UploadFetchedTexture(
-  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, vtkImageData* image)
+// A texture the searches read texel by texel (nearest filtering), one or two components.
+bool UploadFetchedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
+  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat)
 {
-  vtkDataArray* values = image->GetPointData()->GetScalars();
   const int components = values->GetNumberOfComponents();
   texture->SetContext(window);
-  // both formats, every time: vtkTextureObject keeps the pixel format of an earlier
-  // upload, and one method's image would be read with another's layout
-  texture->SetInternalFormat(components == 1 ? GL_R32F : GL_RG32F);
+  // vtkTextureObject keeps the formats and data type of an earlier upload, and one
+  // method's image would be read with another's layout
+  texture->ResetFormatAndType();
+  texture->SetInternalFormat(internalFormat);
   texture->SetFormat(components == 1 ? GL_RED : GL_RG);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   // one texel per cell, repeating as the height map does (texelFetch ignores it)
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
-  return texture->Create2DFromRaw(image->GetDimensions()[0], image->GetDimensions()[1],
-    components, VTK_FLOAT, values->GetVoidPointer(0));
+  return texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
+    values->GetDataType(), values->GetVoidPointer(0));
+}
+
+// The two bytes a cell of vtkConeStepMapFilter's map is uploaded as.
+vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
+{
+  vtkDataArray* cones = coneMap->GetPointData()->GetScalars();
+  const double maximumRatio = vtkConeStepMapFilter::GetMaximumRatio(
+    coneMap->GetDimensions()[0], coneMap->GetDimensions()[1]);
+  auto codes = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  codes->SetNumberOfComponents(2);
+  codes->SetNumberOfTuples(cones->GetNumberOfTuples());
+  vtkSMPTools::For(0, cones->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      vtkConeStepMapFilter::EncodeCone(cones->GetComponent(cell, 0), cones->GetComponent(cell, 1),
+        maximumRatio, codes->GetPointer(2 * cell));
+    }
+  });
+  return codes;
 }
 
 // Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
@@ -415,28 +453,56 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return false;
   }
 
-  if (this->ReliefTexture->GetHandle() != 0 &&
+  if (this->DepthTexture->GetHandle() != 0 &&
     this->ReliefTextureUploadTime > relief->GetMTime())
   {
     return true;
   }
 
-  // The searches read depth only: a one-channel 32-bit copy costs them a quarter of the
-  // texel traffic of the relief texture, which is read once per pixel, for its normal:
-  // half floats are plenty there (12 bytes a texel in all instead of 20).
+  // One 16-bit depth texture serves the searches and the shading, which rebuilds the
+  // normal from it: the filter's depths lie on that grid, so it holds them exactly, in a
+  // sixth of the bytes of float normals and depth. Only a normal map given with the
+  // heights needs a texture of its own: its (nx, ny), nz >= 0 following from them.
   const vtkIdType texelCount = relief->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> depths;
+  vtkNew<vtkUnsignedShortArray> depths;
   depths->SetNumberOfValues(texelCount);
   for (vtkIdType texel = 0; texel < texelCount; ++texel)
   {
-    depths->SetValue(texel, static_cast<float>(texels->GetComponent(texel, 3)));
+    depths->SetValue(texel, static_cast<unsigned short>(std::lround(
+      texels->GetComponent(texel, 3) * vtkReliefTextureFilter::DEPTH_LEVELS)));
   }
-  if (!UploadMipmappedTexture(this->ReliefTexture, window, dimensions, texels, GL_RGBA16F) ||
-    !UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths, GL_R32F))
+  bool uploaded = UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths, GL_R16);
+  this->DepthTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 2);
+  const bool inputNormals = this->ReliefTextureFilter->GetUseInputNormals();
+  this->NormalTextureBytes = 0;
+  if (inputNormals)
+  {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetNumberOfComponents(2);
+    normals->SetNumberOfTuples(texelCount);
+    for (vtkIdType texel = 0; texel < texelCount; ++texel)
+    {
+      normals->SetTypedComponent(texel, 0, static_cast<float>(texels->GetComponent(texel, 0)));
+      normals->SetTypedComponent(texel, 1, static_cast<float>(texels->GetComponent(texel, 1)));
+    }
+    uploaded = uploaded &&
+      UploadMipmappedTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM);
+    this->NormalTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 4);
+  }
+  else
+  {
+    this->NormalTexture->ReleaseGraphicsResources(window);
+  }
+  if (!uploaded)
   {
     vtkErrorMacro("Could not upload the " << dimensions[0] << "x" << dimensions[1]
                                           << " relief texture to the GPU.");
     return false;
+  }
+  if (inputNormals != this->InputNormals)
+  {
+    this->InputNormals = inputNormals;
+    this->ShaderOptionsTime.Modified();
   }
   this->ReliefTextureUploadTime.Modified();
   return true;
@@ -559,12 +625,25 @@ bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
 bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!UploadFetchedTexture(this->AccelerationTexture, window, acceleration))
+  this->AccelerationTextureBytes = 0;
+  // the cone map in two bytes a cell, rounded conservatively; the other maps as computed
+  vtkSmartPointer<vtkDataArray> values = acceleration->GetPointData()->GetScalars();
+  const bool cones = this->SearchMethod == CONE_STEP;
+  if (cones)
+  {
+    values = EncodeConeMap(acceleration);
+  }
+  const unsigned int internalFormat = cones ? GL_RG8
+    : values->GetNumberOfComponents() == 1  ? GL_R32F
+                                            : GL_RG32F;
+  if (!UploadFetchedTexture(
+        this->AccelerationTexture, window, acceleration->GetDimensions(), values, internalFormat))
   {
     vtkErrorMacro("Could not upload the " << this->GetSearchMethodAsString()
                                           << " acceleration image to the GPU.");
     return false;
   }
+  this->AccelerationTextureBytes = values->GetNumberOfValues() * values->GetDataTypeSize();
   return true;
 }
 
@@ -628,8 +707,11 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   this->Superclass::RenderPieceStart(ren, actor);
   if (this->DrawingRelief)
   {
-    this->ReliefTexture->Activate();
     this->DepthTexture->Activate();
+    if (this->InputNormals)
+    {
+      this->NormalTexture->Activate();
+    }
     if (NeedsAcceleration(this->ActiveSearchMethod))
     {
       this->AccelerationTexture->Activate();
@@ -645,8 +727,11 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
     {
       this->AccelerationTexture->Deactivate();
     }
+    if (this->InputNormals)
+    {
+      this->NormalTexture->Deactivate();
+    }
     this->DepthTexture->Deactivate();
-    this->ReliefTexture->Deactivate();
   }
   this->Superclass::RenderPieceFinish(ren, actor);
 }
@@ -728,7 +813,8 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::System::Dec",
     "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable\n");
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
-    "//VTK::Edges::Dec\n" + this->GetSearchDefines() + declarations);
+    "//VTK::Edges::Dec\n" + this->GetSearchDefines() +
+      (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations);
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
     std::string(vtkReliefFragmentImpl) + "\n  //VTK::UniformFlow::Impl");
   vtkShaderProgram::Substitute(
@@ -803,17 +889,20 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
   vtkShaderProgram* program = cellBO.Program;
-  if (!this->DrawingRelief || !program->IsUniformUsed("reliefTexture"))
+  if (!this->DrawingRelief || !program->IsUniformUsed("reliefDepthTexture"))
   {
     return;
   }
-  program->SetUniformi("reliefTexture", this->ReliefTexture->GetTextureUnit());
   program->SetUniformi("reliefDepthTexture", this->DepthTexture->GetTextureUnit());
-  const float textureSize[2] = { static_cast<float>(this->ReliefTexture->GetWidth()),
-    static_cast<float>(this->ReliefTexture->GetHeight()) };
+  const float textureSize[2] = { static_cast<float>(this->DepthTexture->GetWidth()),
+    static_cast<float>(this->DepthTexture->GetHeight()) };
   program->SetUniform2f("reliefTextureSize", textureSize);
-  program->SetUniformf(
-    "reliefNormalRatio", static_cast<float>(this->ReliefTextureFilter->GetDepthToTexelRatio()));
+  if (this->InputNormals)
+  {
+    program->SetUniformi("reliefNormalTexture", this->NormalTexture->GetTextureUnit());
+    program->SetUniformf(
+      "reliefNormalRatio", static_cast<float>(this->ReliefTextureFilter->GetDepthToTexelRatio()));
+  }
   program->SetUniformf("reliefDepthScale", static_cast<float>(std::max(this->DepthScale, 0.0)));
   program->SetUniformi("reliefLinearSteps", this->LinearSteps);
   program->SetUniformi("reliefBinarySteps", this->BinarySteps);
@@ -823,6 +912,14 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   if (NeedsAcceleration(this->ActiveSearchMethod))
   {
     program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
+  }
+  if (this->ActiveSearchMethod == CONE_STEP)
+  {
+    const float coneRange[2] = { static_cast<float>(vtkConeStepMapFilter::GetMaximumRatio(
+                                   this->AccelerationTexture->GetWidth(),
+                                   this->AccelerationTexture->GetHeight())),
+      static_cast<float>(vtkConeStepMapFilter::RATIO_OCTAVES) };
+    program->SetUniform2f("reliefConeRange", coneRange);
   }
   if (this->ActiveSearchMethod == MAXIMUM_MIPMAP)
   {
@@ -883,12 +980,21 @@ void vtkOpenGLReliefMapper::SetCameraShaderParameters(
   program->SetUniformMatrix("reliefNormalMatrix", normals);
 }
 
+vtkIdType vtkOpenGLReliefMapper::GetTextureBytes()
+{
+  return this->DepthTextureBytes + this->NormalTextureBytes +
+    (NeedsAcceleration(this->ActiveSearchMethod) ? this->AccelerationTextureBytes : 0);
+}
+
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->ReliefTexture->ReleaseGraphicsResources(window);
   this->DepthTexture->ReleaseGraphicsResources(window);
+  this->NormalTexture->ReleaseGraphicsResources(window);
   this->AccelerationTexture->ReleaseGraphicsResources(window);
+  this->DepthTextureBytes = 0;
+  this->NormalTextureBytes = 0;
+  this->AccelerationTextureBytes = 0;
   this->UploadedAcceleration = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }

@@ -22,6 +22,13 @@
  * (SetAccelerationConnection()). Setters that change only a uniform
  * (DepthScale, step counts, SelfShadowing, DepthCorrection, DisplayMode) neither
  * rebuild the shader nor the buffers.
+ *
+ * On the GPU the relief is one 16-bit depth texture with its mipmaps (vtkReliefTextureFilter's
+ * depths lie on its levels): the searches read it, and the shading rebuilds the relief
+ * normal from it by central differences, so the surface lit is the surface searched. A
+ * normal map given with the heights (the filter's UseInputNormals) adds its (nx, ny) in
+ * 16 bits. ConeStep's cone map takes two bytes a cell (vtkConeStepMapFilter::EncodeCone),
+ * the other acceleration images floats. GetTextureBytes() reports the total.
  */
 #ifndef vtkOpenGLReliefMapper_h
 #define vtkOpenGLReliefMapper_h
@@ -199,6 +206,14 @@ public:
   /// The mesh as rendered: triangulated, with normals, tangents and texture scale.
   vtkPolyData* GetReliefSurface();
 
+  /**
+   * GPU memory the relief's textures take, in bytes, as last uploaded by a render:
+   * the 16-bit depth texture with its mipmaps, an input normal map's texture if the
+   * relief texture filter uses one (UseInputNormals), and the active search method's
+   * acceleration image. 0 before the first render and after ReleaseGraphicsResources().
+   */
+  vtkIdType GetTextureBytes();
+
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
@@ -246,9 +261,13 @@ protected:
   vtkNew<vtkCallbackCommand> ForwardMessages;
   vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
-  vtkNew<vtkTextureObject> ReliefTexture; // (nx, ny, nz, depth) in half floats, for normals
-  vtkNew<vtkTextureObject> DepthTexture;  // depth alone, read by the searches
+  vtkNew<vtkTextureObject> DepthTexture;  // 16-bit depth: searched, and shaded from
+  vtkNew<vtkTextureObject> NormalTexture; // (nx, ny) of an input normal map, if one is used
   vtkNew<vtkTextureObject> AccelerationTexture; // what the search method needs besides
+  bool InputNormals = false; // NormalTexture holds the normals the shading reads
+  vtkIdType DepthTextureBytes = 0;
+  vtkIdType NormalTextureBytes = 0;
+  vtkIdType AccelerationTextureBytes = 0;
   vtkSmartPointer<vtkReliefAccelerationFilter> AccelerationFilter; // builds it, for SearchMethod
   int AccelerationFilterMethod = -1; // the method AccelerationFilter was made for
   vtkTimeStamp AccelerationUploadTime;

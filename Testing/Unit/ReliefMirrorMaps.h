@@ -101,11 +101,22 @@ CellMap<Value> CellMapOf(vtkImageData* image)
   return map;
 }
 
-/// vtkConeStepMapFilter's (top, ratio) per cell of the field.
+/// vtkConeStepMapFilter's (top, ratio) per cell of the field as the shader reads them:
+/// uploaded in two bytes a cell (EncodeCone) and decoded by reliefConeDecode().
 inline ConeStepMap ConeMapOf(const DepthField& field)
 {
   vtkNew<vtkConeStepMapFilter> filter;
-  return CellMapOf<vec2>(Accelerate(filter, field));
+  ConeStepMap cones = CellMapOf<vec2>(Accelerate(filter, field));
+  const double maximumRatio = vtkConeStepMapFilter::GetMaximumRatio(field.Width, field.Height);
+  const vec2 range(static_cast<float>(maximumRatio),
+    static_cast<float>(vtkConeStepMapFilter::RATIO_OCTAVES));
+  for (vec2& cone : cones.Values)
+  {
+    unsigned char code[2];
+    vtkConeStepMapFilter::EncodeCone(cone.x, cone.y, maximumRatio, code);
+    cone = reliefConeDecode(vec2(code[0] / 255.0f, code[1] / 255.0f), range);
+  }
+  return cones;
 }
 
 /// vtkSafetyRadiusFilter's radius per cell of the field, at error tolerance e.

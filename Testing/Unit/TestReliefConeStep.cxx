@@ -472,3 +472,42 @@ TEST(ReliefConeStepMapFilter, OutputIsTopAndRatioPerCell)
     }
   }
 }
+
+TEST(ReliefConeStepMapFilter, TwoByteCellsRoundInsideTheCone)
+{
+  // What the mapper uploads, as the shader decodes it: an apex no deeper than the top
+  // (strictly higher for a top below the surface, within 1/255) and a ratio no wider
+  // than the proven one (within a code step, 2^(16/254), 4.5%), or 0 below the codes.
+  const double maximum = vtkConeStepMapFilter::GetMaximumRatio(512, 256);
+  const vec2 range(static_cast<float>(maximum),
+    static_cast<float>(vtkConeStepMapFilter::RATIO_OCTAVES));
+  const double step = std::exp2(vtkConeStepMapFilter::RATIO_OCTAVES / 254.0);
+  const double lowest = maximum * std::exp2(-double(vtkConeStepMapFilter::RATIO_OCTAVES));
+  std::mt19937 generator(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 20000; ++k)
+  {
+    // tops on the 16-bit grid (k = 0 and 1: the surface and the deepest level)
+    const double top = k < 2 ? k : std::round(unit(generator) * 65535.0) / 65535.0;
+    // ratios from far below the lowest code to the maximum
+    const double ratio = k == 2 ? 0.0 : maximum * std::exp2(-20.0 * unit(generator));
+    unsigned char code[2];
+    vtkConeStepMapFilter::EncodeCone(top, ratio, maximum, code);
+    const vec2 decoded = reliefConeDecode(vec2(code[0] / 255.0f, code[1] / 255.0f), range);
+    ASSERT_LE(decoded.x, top) << "top " << top;
+    if (top > 0.0)
+    {
+      ASSERT_LT(decoded.x, top) << "top " << top;
+    }
+    ASSERT_GT(decoded.x, top - 1.0 / 255.0 - 1e-6) << "top " << top;
+    ASSERT_LE(decoded.y, ratio) << "ratio " << ratio;
+    if (ratio >= lowest * 1.0001)
+    {
+      ASSERT_GT(decoded.y * step * 1.0001, ratio) << "ratio " << ratio;
+    }
+    else
+    {
+      ASSERT_LT(decoded.y, lowest * 1.0001) << "ratio " << ratio;
+    }
+  }
+}

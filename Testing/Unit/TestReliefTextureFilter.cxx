@@ -68,6 +68,13 @@ std::array<double, 4> Texel(vtkImageData* relief, int i, int j)
   return texel;
 }
 
+// A depth as the filter stores it: on the grid of the 16-bit depth texture.
+double OnGrid(double depth)
+{
+  return std::round(depth * vtkReliefTextureFilter::DEPTH_LEVELS) /
+    vtkReliefTextureFilter::DEPTH_LEVELS;
+}
+
 // The normal of the surface (i, j, -r * depth) for depth slopes ddx, ddy.
 std::array<double, 3> ExpectedNormal(double r, double ddx, double ddy)
 {
@@ -148,8 +155,11 @@ TEST(ReliefTextureFilter, RampAlongXGivesAnalyticDepthAndPeriodicNormals)
       for (int i = 0; i < width; ++i)
       {
         const auto texel = Texel(output, i, j);
-        EXPECT_NEAR(texel[3], 1.0 - i / 7.0, 1e-7) << "i " << i;
-        const double ddx = (i == 0 || i == width - 1) ? 3.0 / 7.0 : -1.0 / 7.0;
+        auto depth = [&](int k) { return OnGrid(1.0 - ((k + width) % width) / 7.0); };
+        EXPECT_NEAR(texel[3], depth(i), 1e-7) << "i " << i;
+        // inside the ramp -1/7 (up to the grid), at the borders +3/7
+        const double ddx = 0.5 * (depth(i + 1) - depth(i - 1));
+        EXPECT_NEAR(ddx, (i == 0 || i == width - 1) ? 3.0 / 7.0 : -1.0 / 7.0, 1.0 / 65535.0);
         ExpectNormal(texel, ExpectedNormal(r, ddx, 0.0));
       }
     }
@@ -269,7 +279,29 @@ TEST(ReliefTextureFilter, FloatInputIsNormalizedByItsRange)
     vtkImageData* output = RunFilter(filter, input);
     for (int i = 0; i < 5; ++i)
     {
-      EXPECT_NEAR(Texel(output, i, 0)[3], 1.0 - i / 4.0, 1e-7);
+      EXPECT_NEAR(Texel(output, i, 0)[3], OnGrid(1.0 - i / 4.0), 1e-7);
+    }
+  }
+}
+
+TEST(ReliefTextureFilter, FloatDepthsLieOnTheSixteenBitGrid)
+{
+  // what the mapper's 16-bit depth texture holds exactly: k / 65535, the nearest level
+  auto input = MakeImage(
+    16, 16, 1, VTK_DOUBLE, [](int i, int j, int) { return std::sin(0.7 * i) * std::cos(1.3 * j); });
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkImageData* output = RunFilter(filter, input);
+  const double* range = input->GetPointData()->GetScalars()->GetRange();
+  for (int j = 0; j < 16; ++j)
+  {
+    for (int i = 0; i < 16; ++i)
+    {
+      const double depth = Texel(output, i, j)[3];
+      const double level = depth * vtkReliefTextureFilter::DEPTH_LEVELS;
+      EXPECT_NEAR(level, std::round(level), 0.01) << i << ", " << j; // float: 4e-3 a level
+      const double exact =
+        1.0 - (input->GetScalarComponentAsDouble(i, j, 0, 0) - range[0]) / (range[1] - range[0]);
+      EXPECT_NEAR(depth, exact, 0.5 / vtkReliefTextureFilter::DEPTH_LEVELS + 1e-7);
     }
   }
 }
@@ -424,7 +456,7 @@ TEST(ReliefTextureFilter, NonFiniteHeightsAreReplacedWithOneWarning)
   EXPECT_EQ(Texel(output, 0, 0)[3], 0.0) << "+Inf is the highest level";
   EXPECT_EQ(Texel(output, 1, 0)[3], 1.0) << "-Inf is the lowest level";
   EXPECT_EQ(Texel(output, 2, 0)[3], 1.0) << "NaN is the lowest level";
-  EXPECT_NEAR(Texel(output, 1, 1)[3], 0.5, 1e-7) << "finite heights keep their range";
+  EXPECT_NEAR(Texel(output, 1, 1)[3], OnGrid(0.5), 1e-7) << "finite heights keep their range";
 }
 
 TEST(ReliefTextureFilter, ThreeDimensionalInputGivesErrorAndEmptyOutputThenRecovers)

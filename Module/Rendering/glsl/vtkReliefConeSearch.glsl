@@ -3,7 +3,8 @@
 // field (see that class for the definition and the proof). Shared with the CPU mirror;
 // see vtkReliefCommon.glsl for the rules. Needs vtkReliefSearch.glsl and
 // vtkReliefGridSearch.glsl, and RELIEF_CONE_STEP(cell): vec2 (top depth, cone ratio in
-// texels per unit depth) of a cell, its index unwrapped (the includer repeats it).
+// texels per unit depth) of a cell, its index unwrapped (the includer repeats it), which
+// the includer reads from the 8-bit map through reliefConeDecode().
 //
 // Standing over a cell above its top, the ray may travel inside the cell's cone; it
 // stays above the field there or enters it once. So each step goes to where the ray
@@ -16,6 +17,18 @@
 // Bound: the hit is the first intersection with the bilinear field, exactly as
 // ExactDDA's (up to float rounding): the binary refinement only narrows the bracket
 // that the exact walk finishes.
+
+// A cell's (top, ratio) from vtkConeStepMapFilter::EncodeCone's two bytes, read as
+// unsigned normalized values (code / 255); range: (the maximum ratio, the octaves below
+// it that the ratio codes span).
+vec2 reliefConeDecode(vec2 stored, vec2 range)
+{
+  float topCode = floor(stored.x * 255.0f + 0.5f);
+  float ratioCode = floor(stored.y * 255.0f + 0.5f);
+  float ratio =
+    ratioCode < 0.5f ? 0.0f : range.x * exp2(range.y * (ratioCode - 255.0f) / 254.0f);
+  return vec2(topCode * (1.0f / 255.0f), ratio);
+}
 
 ReliefHit reliefSearchConeStep(ReliefRay ray)
 {

@@ -1,11 +1,13 @@
 // vtkRelief fragment declarations: uniforms, the interpolated frame, the search, and
 // the per-light shadow query used by VTK's lighting code.
-uniform sampler2D reliefTexture;      // (nx, ny, nz, depth) from vtkReliefTextureFilter
-uniform sampler2D reliefDepthTexture; // its depth alone, for the searches
+uniform sampler2D reliefDepthTexture; // vtkReliefTextureFilter's depth, 16-bit
+#ifdef RELIEF_INPUT_NORMALS
+uniform sampler2D reliefNormalTexture; // (nx, ny) of the normal map given with the heights
+#endif
 uniform sampler2D reliefAccelerationTexture; // what the search method reads besides
 uniform int reliefPyramidTop;
 uniform vec2 reliefTextureSize;    // texels per tile
-uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio
+uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio (input normals only)
 uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief
 uniform int reliefLinearSteps;
 uniform int reliefBinarySteps;
@@ -70,8 +72,31 @@ uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
 // mod(cell, size)); cells as far as 10^5 texels away still land within 0.01 texel
 #define RELIEF_SAFETY_RADIUS(cell) \
   textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).r
-#define RELIEF_CONE_STEP(cell) \
-  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).rg
+uniform vec2 reliefConeRange; // vtkConeStepMapFilter's maximum ratio and RATIO_OCTAVES
+#define RELIEF_CONE_STEP(cell) reliefConeDecode( \
+  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).rg, \
+  reliefConeRange)
+
+// The depth gradient (change of depth per unit of u and v) at a hit, at the level the
+// search read there: central differences one texel of that level apart, which at level 0
+// are exactly the bilinear blend of vtkReliefTextureFilter's per-texel normals, so the
+// shading slopes are those of the field searched; or the normal map's, read as the
+// filter encodes it.
+vec2 reliefDepthGradient(vec2 uv)
+{
+#ifdef RELIEF_INPUT_NORMALS
+  vec2 normalXY = textureLod(reliefNormalTexture, uv, reliefLod).xy;
+  float normalZ = sqrt(max(1.0 - dot(normalXY, normalXY), 0.0));
+  return normalXY / (max(normalZ, 1e-4) * reliefNormalRatio) * reliefTextureSize;
+#else
+  vec2 texel = exp2(max(reliefLod, 0.0)) / reliefTextureSize;
+  float alongU = textureLod(reliefDepthTexture, uv + vec2(texel.x, 0.0), reliefLod).r -
+    textureLod(reliefDepthTexture, uv - vec2(texel.x, 0.0), reliefLod).r;
+  float alongV = textureLod(reliefDepthTexture, uv + vec2(0.0, texel.y), reliefLod).r -
+    textureLod(reliefDepthTexture, uv - vec2(0.0, texel.y), reliefLod).r;
+  return 0.5 * vec2(alongU / texel.x, alongV / texel.y);
+#endif
+}
 
 //VTK::Relief::Common
 //VTK::Relief::Search

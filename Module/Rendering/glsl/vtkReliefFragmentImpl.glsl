@@ -40,9 +40,8 @@
   float reliefDescent = max(-dot(reliefViewVC, reliefFrameN), 1e-6);
   vec3 reliefHitVC = reliefPositionVSOutput +
     reliefViewVC * (reliefViewHit.position.z * max(reliefDepthScale, 0.0) / reliefDescent);
-  vec4 reliefTexel = textureLod(reliefTexture, reliefHitTCoord, reliefLod);
-  vec2 reliefSlope = reliefTexel.xy / (max(reliefTexel.z, 1e-4) * reliefNormalRatio) *
-    reliefTextureSize * max(reliefDepthScale, 0.0) / reliefScale;
+  vec2 reliefSlope =
+    reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0) / reliefScale;
   vec3 reliefNormalTS = normalize(vec3(reliefSlope, 1.0));
   vec3 reliefLitNormalVC = normalize(reliefFrameT * reliefNormalTS.x +
     reliefFrameB * reliefNormalTS.y + reliefFrameN * reliefNormalTS.z);
