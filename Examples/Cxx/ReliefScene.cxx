@@ -228,17 +228,18 @@ int SearchMethodNamed(const std::string& name)
   return -1;
 }
 
-vtkSmartPointer<vtkImageData> HeightImage(int size, const std::function<float(int, int)>& height)
+vtkSmartPointer<vtkImageData> HeightImage(
+  int width, int height, const std::function<float(int, int)>& heightAt)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(size, size, 1);
+  image->SetDimensions(width, height, 1);
   image->AllocateScalars(VTK_FLOAT, 1);
   auto* heights = static_cast<float*>(image->GetScalarPointer());
-  for (int j = 0; j < size; ++j)
+  for (int j = 0; j < height; ++j)
   {
-    for (int i = 0; i < size; ++i)
+    for (int i = 0; i < width; ++i)
     {
-      heights[j * size + i] = height(i, j);
+      heights[j * width + i] = heightAt(i, j);
     }
   }
   return image;
@@ -246,7 +247,7 @@ vtkSmartPointer<vtkImageData> HeightImage(int size, const std::function<float(in
 
 vtkSmartPointer<vtkImageData> ThinFeatures()
 {
-  return HeightImage(64, [](int i, int j) {
+  return HeightImage(64, 64, [](int i, int j) {
     const bool wall = i % 16 == 8 || (j == 40 && i >= 16 && i < 48);
     const bool spike = i % 16 == 0 && j % 8 == 4;
     return wall || spike ? 1.0f : 0.2f;

@@ -72,8 +72,9 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int w
 /// The search method named `name` (GetSearchMethodAsString's names, case and dashes
 /// ignored: "exact-dda" is ExactDDA), or -1.
 int SearchMethodNamed(const std::string& name);
-/// A size x size one-component float height image, height(i, j) at texel (i, j).
-vtkSmartPointer<vtkImageData> HeightImage(int size, const std::function<float(int, int)>& height);
+/// A width x height one-component float height image, heightAt(i, j) at texel (i, j).
+vtkSmartPointer<vtkImageData> HeightImage(
+  int width, int height, const std::function<float(int, int)>& heightAt);
 /// Thin features (seed 002 Fig. 11): a 64x64 height image (white = high) of walls and
 /// spikes one texel wide rising from a low floor.
 vtkSmartPointer<vtkImageData> ThinFeatures();

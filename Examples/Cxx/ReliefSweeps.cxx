@@ -81,7 +81,7 @@ vtkSmartPointer<vtkImageData> Stones(int size)
 vtkSmartPointer<vtkImageData> Walls(int width)
 {
   return ReliefScene::HeightImage(
-    64, [=](int i, int j) { return i % 16 < width || j % 16 < width ? 1.0f : 0.2f; });
+    64, 64, [=](int i, int j) { return i % 16 < width || j % 16 < width ? 1.0f : 0.2f; });
 }
 
 // A sphere of `radius` whose texture tiles keep one texel the same world size at every

@@ -14,10 +14,11 @@
  * rounded to the nearest k / DEPTH_LEVELS (65535), the levels of the 16-bit
  * texture the mappers search, so that the searched field, the acceleration
  * images built from this output and any geometry displaced by it agree exactly;
- * 8- and 16-bit inputs lose nothing, float inputs at most 7.7e-6 of the depth. By default white is
- * high (InputConvention Height); SetInputConventionToDepth() reads white as
- * deep. Non-finite heights are replaced (+Inf by the highest level, -Inf and
- * NaN by the lowest) with one warning.
+ * 8- and 16-bit inputs lose nothing, others at most 7.7e-6 of the depth range.
+ * By default white is high (InputConvention Height);
+ * SetInputConventionToDepth() reads white as deep. Non-finite heights are
+ * replaced (+Inf by the highest level, -Inf and NaN by the lowest) with one
+ * warning.
  *
  * The height is taken from one component of the input (Component); by default
  * the alpha of a 4-component image, the first component otherwise.

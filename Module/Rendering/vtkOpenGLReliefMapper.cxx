@@ -1015,6 +1015,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DisplayMode: " << (this->DisplayMode == SAMPLE_COUNT ? "SampleCount" : "Shaded")
      << "\n";
   os << indent << "HeightMap: " << this->GetHeightMap() << "\n";
+  os << indent << "TextureBytes: " << this->GetTextureBytes() << "\n";
   os << indent << "ReliefTextureFilter:\n";
   this->ReliefTextureFilter->PrintSelf(os, indent.GetNextIndent());
   os << indent << "TangentFrame:\n";

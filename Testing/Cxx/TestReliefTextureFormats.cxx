@@ -42,19 +42,9 @@ long MipmappedTexels(int width, int height)
 // Round bumps over the whole depth range, on a map that is not square.
 vtkSmartPointer<vtkImageData> Bumps()
 {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(Width, Height, 1);
-  image->AllocateScalars(VTK_FLOAT, 1);
-  auto* heights = static_cast<float*>(image->GetScalarPointer());
-  for (int j = 0; j < Height; ++j)
-  {
-    for (int i = 0; i < Width; ++i)
-    {
-      heights[j * Width + i] = static_cast<float>(std::sin(2.0 * M_PI * i / 16.0) *
-        std::sin(2.0 * M_PI * j / 12.0));
-    }
-  }
-  return image;
+  return ReliefScene::HeightImage(Width, Height, [](int i, int j) {
+    return static_cast<float>(std::sin(2.0 * M_PI * i / 16.0) * std::sin(2.0 * M_PI * j / 12.0));
+  });
 }
 
 // Mean and largest difference of two renders' colour channels, in 8-bit levels.
