@@ -2,10 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkConeStepMapFilter.h"
-#include "vtkOutputWindow.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -21,6 +19,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkReliefForwardMessages.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
@@ -156,31 +155,9 @@ void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
 {
   this->SetNumberOfInputPorts(3);
-  // The internal filters' errors and warnings are the mapper's: observers of the mapper
-  // receive them, and without observers they are printed as usual.
-  this->ForwardMessages->SetClientData(this);
-  this->ForwardMessages->SetCallback(
-    [](vtkObject*, unsigned long event, void* mapper, void* message) {
-      auto* self = static_cast<vtkOpenGLReliefMapper*>(mapper);
-      if (self->HasObserver(event))
-      {
-        self->InvokeEvent(event, message);
-      }
-      else if (event == vtkCommand::ErrorEvent)
-      {
-        vtkOutputWindowDisplayErrorText(static_cast<const char*>(message));
-      }
-      else
-      {
-        vtkOutputWindowDisplayWarningText(static_cast<const char*>(message));
-      }
-    });
-  for (vtkAlgorithm* filter : { static_cast<vtkAlgorithm*>(this->TangentFrame),
-         static_cast<vtkAlgorithm*>(this->ReliefTextureFilter) })
-  {
-    filter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
-    filter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
-  }
+  // The internal filters' errors and warnings are the mapper's.
+  vtkReliefForwardMessages(this->TangentFrame, this);
+  vtkReliefForwardMessages(this->ReliefTextureFilter, this);
 }
 
 vtkOpenGLReliefMapper::~vtkOpenGLReliefMapper() = default;
@@ -581,8 +558,7 @@ vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
   {
     this->AccelerationFilter = vtk::TakeSmartPointer(NewAccelerationFilter(this->SearchMethod));
     this->AccelerationFilterMethod = this->SearchMethod;
-    this->AccelerationFilter->AddObserver(vtkCommand::ErrorEvent, this->ForwardMessages);
-    this->AccelerationFilter->AddObserver(vtkCommand::WarningEvent, this->ForwardMessages);
+    vtkReliefForwardMessages(this->AccelerationFilter, this);
   }
   if (auto* safety = vtkSafetyRadiusFilter::SafeDownCast(this->AccelerationFilter))
   {

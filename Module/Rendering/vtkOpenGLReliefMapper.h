@@ -39,7 +39,6 @@
 #include "vtkSmartPointer.h"  // for AccelerationFilter
 #include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
-class vtkCallbackCommand;
 class vtkImageData;
 class vtkMatrix3x3;
 class vtkReliefTangentFrameFilter;
@@ -258,7 +257,6 @@ protected:
   bool DepthCorrection = true;
   int DisplayMode = SHADED;
 
-  vtkNew<vtkCallbackCommand> ForwardMessages;
   vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
   vtkNew<vtkTextureObject> DepthTexture;  // 16-bit depth: searched, and shaded from

@@ -9,18 +9,21 @@ import os
 import sys
 import unittest
 
+import numpy
+
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_FLOAT, VTK_STRING, VTK_UNSIGNED_SHORT
 from vtkmodules.vtkCommonCore import vtkCommand
-from vtkmodules.vtkFiltersSources import vtkPlaneSource
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkFiltersTexture import vtkTextureMapToSphere
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
                                          vtkWindowToImageFilter)
 
 import vtkrelief
-from vtkrelief import (vtkConeStepMapFilter, vtkMaximumMipmapFilter, vtkOpenGLReliefMapper,
-                       vtkOpenImageIOReader, vtkReliefDisplacementFilter,
+from vtkrelief import (vtkConeStepMapFilter, vtkLocalQuadricFilter, vtkMaximumMipmapFilter,
+                       vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefDisplacementFilter,
                        vtkReliefTangentFrameFilter, vtkReliefTextureFilter,
                        vtkSafetyRadiusFilter)
 
@@ -53,7 +56,8 @@ class TestReliefPython(unittest.TestCase):
     def test_classes_come_from_the_package(self):
         for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
                     vtkReliefTangentFrameFilter, vtkMaximumMipmapFilter,
-                    vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkReliefDisplacementFilter):
+                    vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkReliefDisplacementFilter,
+                    vtkLocalQuadricFilter):
             self.assertIs(getattr(vtkrelief, cls.__name__), cls)
             self.assertEqual(cls().GetClassName(), cls.__name__)
 
@@ -165,6 +169,28 @@ class TestReliefPython(unittest.TestCase):
         self.assertLess(heights.min(), -0.09)
         self.assertGreater(heights.max(), -0.025)
         self.assertIsNotNone(mesh.GetPointData().GetNormals())
+
+    def test_local_quadrics_of_a_sphere_in_a_pipeline(self):
+        # sphere -> texture coordinates -> quadrics: a = b = -1 / (2 r) away from the poles
+        sphere = vtkSphereSource()
+        sphere.SetRadius(2.0)
+        sphere.SetThetaResolution(96)
+        sphere.SetPhiResolution(48)
+        texture = vtkTextureMapToSphere()
+        texture.SetInputConnection(sphere.GetOutputPort())
+        texture.PreventSeamOff()
+        quadrics = vtkLocalQuadricFilter()
+        quadrics.SetInputConnection(texture.GetOutputPort())
+        quadrics.Update()
+        mesh = quadrics.GetOutput()
+        coefficients = vtk_to_numpy(
+            mesh.GetPointData().GetArray(vtkLocalQuadricFilter.QuadricArrayName()))
+        heights = vtk_to_numpy(mesh.GetPoints().GetData())[:, 2]
+        middle = numpy.abs(heights) < 1.0  # away from the poles, where u turns around
+        self.assertGreater(middle.sum(), 1000)
+        numpy.testing.assert_allclose(coefficients[middle], -0.25, rtol=0.03)
+        count = mesh.GetFieldData().GetArray(vtkLocalQuadricFilter.FallbackCountArrayName())
+        self.assertEqual(count.GetValue(0), quadrics.GetNumberOfFallbacks())
 
 
 class TestSampleCountRender(unittest.TestCase):

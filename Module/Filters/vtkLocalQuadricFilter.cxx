@@ -1,0 +1,250 @@
+#include "vtkLocalQuadricFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkReliefForwardMessages.h"
+#include "vtkReliefTangentFrameFilter.h"
+#include "vtkSMPTools.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkLocalQuadricFilter);
+
+namespace
+{
+constexpr int ProgressSlices = 10;
+// 1 - cos^2 of the angle between the columns (x^2) and (y^2) of Eq. 2 below which the
+// system is taken as singular: neighbours along one line through the point, or none.
+constexpr double SingularSine2 = 1e-9;
+
+// The triangles around each point, in compressed rows.
+struct PointTriangles
+{
+  std::vector<vtkIdType> Corners;   // three point ids per triangle
+  std::vector<vtkIdType> Offsets;   // point p's triangles: Triangles[Offsets[p], Offsets[p+1])
+  std::vector<vtkIdType> Triangles; // triangle indices
+};
+
+PointTriangles TrianglesAroundPoints(vtkPolyData* mesh)
+{
+  PointTriangles incidence;
+  const vtkIdType pointCount = mesh->GetNumberOfPoints();
+  incidence.Corners.reserve(3 * static_cast<size_t>(mesh->GetNumberOfPolys()));
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(size, ids);
+    if (size == 3) // the tangent frame filter triangulates: nothing else is left
+    {
+      incidence.Corners.insert(incidence.Corners.end(), ids, ids + 3);
+    }
+  }
+  incidence.Offsets.assign(static_cast<size_t>(pointCount) + 1, 0);
+  for (vtkIdType corner : incidence.Corners)
+  {
+    ++incidence.Offsets[corner + 1];
+  }
+  for (vtkIdType p = 0; p < pointCount; ++p)
+  {
+    incidence.Offsets[p + 1] += incidence.Offsets[p];
+  }
+  incidence.Triangles.resize(incidence.Corners.size());
+  std::vector<vtkIdType> cursor(incidence.Offsets.begin(), incidence.Offsets.end() - 1);
+  for (size_t corner = 0; corner < incidence.Corners.size(); ++corner)
+  {
+    incidence.Triangles[cursor[incidence.Corners[corner]]++] =
+      static_cast<vtkIdType>(corner / 3);
+  }
+  return incidence;
+}
+
+// The other points of the triangles around `point`, `rings` rings deep, each once.
+void Neighbours(const PointTriangles& incidence, vtkIdType point, int rings,
+  std::vector<vtkIdType>& neighbours)
+{
+  neighbours.clear();
+  auto addRing = [&](vtkIdType centre) {
+    for (vtkIdType k = incidence.Offsets[centre]; k < incidence.Offsets[centre + 1]; ++k)
+    {
+      const vtkIdType* corners = incidence.Corners.data() + 3 * incidence.Triangles[k];
+      neighbours.insert(neighbours.end(), corners, corners + 3);
+    }
+  };
+  addRing(point);
+  if (rings > 1)
+  {
+    const size_t firstRing = neighbours.size();
+    for (size_t k = 0; k < firstRing; ++k)
+    {
+      addRing(neighbours[k]);
+    }
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  neighbours.erase(std::remove(neighbours.begin(), neighbours.end(), point), neighbours.end());
+}
+
+bool IsFinite(const glm::dvec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::dvec3 TupleOf(vtkDataArray* array, vtkIdType id)
+{
+  double tuple[3];
+  array->GetTuple(id, tuple);
+  return glm::dvec3(tuple[0], tuple[1], tuple[2]);
+}
+
+// Least squares of Eq. 2 in the frame (normal, tangent) at `origin`: false, with a and
+// b left at 0, when it is undetermined.
+bool FitQuadric(const glm::dvec3& origin, const glm::dvec3& normal, const glm::dvec3& tangent,
+  vtkPoints* points, const std::vector<vtkIdType>& neighbours, double quadric[2])
+{
+  quadric[0] = 0.0;
+  quadric[1] = 0.0;
+  const double normalLength = glm::length(normal);
+  if (!IsFinite(origin) || !IsFinite(normal) || !IsFinite(tangent) || !(normalLength > 0.0))
+  {
+    return false;
+  }
+  const glm::dvec3 n = normal / normalLength;
+  glm::dvec3 t = tangent - n * glm::dot(n, tangent);
+  const double tangentLength = glm::length(t);
+  if (!(tangentLength > 1e-12 * glm::length(tangent)))
+  {
+    return false;
+  }
+  t /= tangentLength;
+  const glm::dvec3 b = glm::cross(n, t);
+  double xxxx = 0.0, yyyy = 0.0, xxyy = 0.0, xxz = 0.0, yyz = 0.0;
+  for (vtkIdType id : neighbours)
+  {
+    double position[3];
+    points->GetPoint(id, position);
+    const glm::dvec3 d = glm::dvec3(position[0], position[1], position[2]) - origin;
+    if (!IsFinite(d))
+    {
+      continue;
+    }
+    const double xx = glm::dot(d, t) * glm::dot(d, t);
+    const double yy = glm::dot(d, b) * glm::dot(d, b);
+    const double z = glm::dot(d, n);
+    xxxx += xx * xx;
+    yyyy += yy * yy;
+    xxyy += xx * yy;
+    xxz += xx * z;
+    yyz += yy * z;
+  }
+  const double determinant = xxxx * yyyy - xxyy * xxyy;
+  if (!(xxxx > 0.0 && yyyy > 0.0 && determinant > SingularSine2 * xxxx * yyyy))
+  {
+    return false;
+  }
+  quadric[0] = (xxz * yyyy - yyz * xxyy) / determinant;
+  quadric[1] = (yyz * xxxx - xxz * xxyy) / determinant;
+  return std::isfinite(quadric[0]) && std::isfinite(quadric[1]);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkLocalQuadricFilter::vtkLocalQuadricFilter() = default;
+vtkLocalQuadricFilter::~vtkLocalQuadricFilter() = default;
+
+int vtkLocalQuadricFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->NumberOfFallbacks = 0;
+
+  vtkNew<vtkPolyData> source;
+  source->ShallowCopy(input);
+  vtkNew<vtkReliefTangentFrameFilter> frame;
+  vtkReliefForwardMessages(frame, this);
+  frame->SetInputData(source);
+  frame->Update();
+  if (!frame->GetHasTangentFrame())
+  {
+    output->ShallowCopy(input);
+    return 1;
+  }
+  vtkPolyData* mesh = frame->GetOutput();
+  this->UpdateProgress(0.3);
+
+  const PointTriangles incidence = TrianglesAroundPoints(mesh);
+  this->UpdateProgress(0.4);
+
+  const vtkIdType pointCount = mesh->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> quadrics;
+  quadrics->SetName(QuadricArrayName());
+  quadrics->SetNumberOfComponents(2);
+  quadrics->SetNumberOfTuples(pointCount);
+  quadrics->Fill(0.0); // what an aborted update leaves: flat
+  vtkPoints* points = mesh->GetPoints();
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkDataArray* tangents = mesh->GetPointData()->GetTangents();
+  std::atomic<vtkIdType> fallbacks(0);
+  const int rings = this->NeighbourhoodRings;
+  auto fitRange = [&](vtkIdType begin, vtkIdType end) {
+    std::vector<vtkIdType> neighbours;
+    vtkIdType undetermined = 0;
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      Neighbours(incidence, p, rings, neighbours);
+      double position[3];
+      points->GetPoint(p, position);
+      double quadric[2];
+      if (!FitQuadric(glm::dvec3(position[0], position[1], position[2]),
+            TupleOf(normals, p), TupleOf(tangents, p), points, neighbours, quadric))
+      {
+        ++undetermined;
+      }
+      quadrics->SetTypedTuple(
+        p, std::array<float, 2>{ static_cast<float>(quadric[0]), static_cast<float>(quadric[1]) }
+             .data());
+    }
+    fallbacks += undetermined;
+  };
+  for (int slice = 0; slice < ProgressSlices && !this->GetAbortExecute(); ++slice)
+  {
+    vtkSMPTools::For(pointCount * slice / ProgressSlices,
+      pointCount * (slice + 1) / ProgressSlices, fitRange);
+    this->UpdateProgress(0.4 + 0.6 * (slice + 1) / ProgressSlices);
+  }
+
+  output->ShallowCopy(mesh);
+  output->GetPointData()->AddArray(quadrics);
+  this->NumberOfFallbacks = fallbacks;
+  vtkNew<vtkIdTypeArray> fallbackCount;
+  fallbackCount->SetName(FallbackCountArrayName());
+  fallbackCount->InsertNextValue(this->NumberOfFallbacks);
+  output->GetFieldData()->AddArray(fallbackCount);
+  return 1;
+}
+
+void vtkLocalQuadricFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NeighbourhoodRings: " << this->NeighbourhoodRings << "\n";
+  os << indent << "NumberOfFallbacks: " << this->NumberOfFallbacks << "\n";
+}
