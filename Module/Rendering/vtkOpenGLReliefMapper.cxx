@@ -33,6 +33,7 @@
 
 #include "vtkReliefCommon.h"
 #include "vtkReliefConeSearch.h"
+#include "vtkReliefQuadric.h"
 #include "vtkReliefFragmentDec.h"
 #include "vtkReliefFragmentImpl.h"
 #include "vtkReliefGeometryDec.h"
@@ -186,6 +187,7 @@ void vtkOpenGLReliefMapper::SetSearchMethod(int method)
   {
     this->SearchMethod = method;
     this->WarnedAccelerationFallback = false;
+    this->WarnedUnsupportedSearchMethod = false;
     this->SetActiveSearchMethod(method);
   }
 }
@@ -512,6 +514,18 @@ vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter(int me
 
 void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
 {
+  if (!this->SupportsSearchMethod(this->SearchMethod))
+  {
+    if (!this->WarnedUnsupportedSearchMethod)
+    {
+      this->WarnedUnsupportedSearchMethod = true;
+      vtkWarningMacro(<< this->GetClassName() << " cannot search with "
+                      << this->GetSearchMethodAsString() << ": "
+                      << this->GetUnsupportedSearchReason() << " Searching with LinearBinary.");
+    }
+    this->SetActiveSearchMethod(LINEAR_BINARY);
+    return;
+  }
   if (!NeedsAcceleration(this->SearchMethod))
   {
     this->SetActiveSearchMethod(this->SearchMethod);
@@ -625,32 +639,32 @@ bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* a
 
 void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
 {
+  vtkPointData* pointData = this->CurrentInput->GetPointData();
+  this->MapReliefAttribute(NormalAttribute, relief ? pointData->GetNormals()->GetName() : nullptr);
+  this->MapReliefAttribute(
+    TangentAttribute, relief ? pointData->GetTangents()->GetName() : nullptr);
+  this->MapReliefAttribute(TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr);
+  this->MapReliefAttribute(
+    TextureScaleAttribute, relief ? vtkReliefTangentFrameFilter::TextureScaleArrayName() : nullptr);
+}
+
+void vtkOpenGLReliefMapper::MapReliefAttribute(const char* shaderInput, const char* arrayName)
+{
   // Remapping calls Modified(), which rebuilds the buffers: only when a name changes.
   // Mappings of the user's own are left alone.
-  vtkPointData* pointData = this->CurrentInput->GetPointData();
-  const std::pair<const char*, const char*> reliefAttributes[] = {
-    { NormalAttribute, relief ? pointData->GetNormals()->GetName() : nullptr },
-    { TangentAttribute, relief ? pointData->GetTangents()->GetName() : nullptr },
-    { TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr },
-    { TextureScaleAttribute,
-      relief ? vtkReliefTangentFrameFilter::TextureScaleArrayName() : nullptr },
-  };
-  for (const auto& attribute : reliefAttributes)
+  const auto mapped = this->ExtraAttributes.find(shaderInput);
+  const bool isMapped = mapped != this->ExtraAttributes.end();
+  if (!arrayName)
   {
-    const auto mapped = this->ExtraAttributes.find(attribute.first);
-    const bool isMapped = mapped != this->ExtraAttributes.end();
-    if (!attribute.second)
+    if (isMapped)
     {
-      if (isMapped)
-      {
-        this->RemoveVertexAttributeMapping(attribute.first);
-      }
+      this->RemoveVertexAttributeMapping(shaderInput);
     }
-    else if (!isMapped || mapped->second.DataArrayName != attribute.second)
-    {
-      this->MapDataArrayToVertexAttribute(
-        attribute.first, attribute.second, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-    }
+  }
+  else if (!isMapped || mapped->second.DataArrayName != arrayName)
+  {
+    this->MapDataArrayToVertexAttribute(
+      shaderInput, arrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   }
 }
 
@@ -766,7 +780,7 @@ void vtkOpenGLReliefMapper::InsertReliefVertexShader(vtkShader* vertexShader)
 {
   std::string vertexSource = vertexShader->GetSource();
   vtkShaderProgram::Substitute(vertexSource, "//VTK::PositionVC::Dec",
-    std::string("//VTK::PositionVC::Dec\n") + vtkReliefVertexDec);
+    "//VTK::PositionVC::Dec\n" + this->GetFrameDefines() + vtkReliefVertexDec);
   vtkShaderProgram::Substitute(vertexSource, "//VTK::CustomEnd::Impl",
     std::string(vtkReliefVertexImpl) + "\n  //VTK::CustomEnd::Impl");
   vertexShader->SetSource(vertexSource);
@@ -779,7 +793,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
     std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
-      vtkReliefConeSearch + vtkReliefSearchMethod);
+      vtkReliefConeSearch + vtkReliefQuadric + vtkReliefSearchMethod);
   // VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit,
   // unless that slot carries the colour coordinates of scalars mapped through a texture.
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
@@ -789,7 +803,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::System::Dec",
     "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable\n");
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
-    "//VTK::Edges::Dec\n" + this->GetSearchDefines() +
+    "//VTK::Edges::Dec\n" + this->GetFrameDefines() + this->GetSearchDefines() +
       (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations);
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
     std::string(vtkReliefFragmentImpl) + "\n  //VTK::UniformFlow::Impl");
@@ -820,7 +834,7 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
   if (!geometrySource.empty())
   {
     vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Dec",
-      std::string("//VTK::Normal::Dec\n") + vtkReliefGeometryDec);
+      "//VTK::Normal::Dec\n" + this->GetFrameDefines() + vtkReliefGeometryDec);
     vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Impl",
       std::string("//VTK::Normal::Impl\n") + vtkReliefGeometryImpl);
     geometryShader->SetSource(geometrySource);

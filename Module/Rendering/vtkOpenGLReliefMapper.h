@@ -231,7 +231,8 @@ protected:
 
   /// Brings the relief surface and texture up to date; false when relief cannot be drawn.
   bool UpdateRelief(vtkRenderer* ren);
-  bool UpdateReliefSurface();
+  /// The mesh as drawn (CurrentInput): the tangent frame filter's output here.
+  virtual bool UpdateReliefSurface();
   bool UpdateReliefTexture(vtkRenderer* ren);
   /// The image connected to input port `port` (1 or 2), or null.
   vtkImageData* GetImageOnPort(int port);
@@ -240,7 +241,16 @@ protected:
   bool CheckAcceleration(vtkImageData* acceleration);
   bool UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration);
   void SetActiveSearchMethod(int method);
-  void MapReliefAttributes(bool relief);
+  /// Binds the frame's arrays to the shader inputs (none when relief is not drawn).
+  virtual void MapReliefAttributes(bool relief);
+  /// Binds one shader input to a point array of CurrentInput (unbinds it for nullptr).
+  void MapReliefAttribute(const char* shaderInput, const char* arrayName);
+  /// Whether this mapper's frame can search with `method`; if not, LinearBinary is used.
+  virtual bool SupportsSearchMethod(int) { return true; }
+  /// Why SupportsSearchMethod() refused, for the warning.
+  virtual const char* GetUnsupportedSearchReason() { return ""; }
+  /// Defines that select the frame, in every shader stage (none: the flat frame).
+  virtual std::string GetFrameDefines() { return std::string(); }
   void InsertReliefVertexShader(vtkShader* vertexShader);
   void InsertReliefFragmentShader(vtkShader* fragmentShader, int lightComplexity);
   void InsertReliefGeometryShader(vtkShader* geometryShader);
@@ -274,6 +284,7 @@ protected:
   int AccelerationMethod = -1; // the method AccelerationTexture was built for
   bool AccelerationUsable = false;
   bool WarnedAccelerationFallback = false;
+  bool WarnedUnsupportedSearchMethod = false;
   vtkTimeStamp ReliefTextureUploadTime;
   vtkTimeStamp OversizeReportTime; // when a too large height map was last reported
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run

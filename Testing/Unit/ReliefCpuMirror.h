@@ -132,6 +132,7 @@ namespace
 #include "vtkReliefGridSearch.glsl"
 #include "vtkReliefSafetySearch.glsl"
 #include "vtkReliefConeSearch.glsl"
+#include "vtkReliefQuadric.glsl"
 #include "vtkReliefSearchMethod.glsl"
 }
 #undef RELIEF_DEPTH

@@ -15,6 +15,8 @@ struct ReliefRay
 {
   vec3 origin;    // (u, v, depth) at t = 0
   vec3 direction; // change of (u, v, depth) from t = 0 to t = 1
+  float bend;     // depth's t^2 term: 0 for a straight ray; below a curved surface's
+                  // quadric the depth of a straight view ray is quadratic (vtkReliefQuadric)
 };
 
 struct ReliefHit
@@ -28,7 +30,8 @@ struct ReliefHit
 
 vec3 reliefRayAt(ReliefRay ray, float t)
 {
-  return ray.origin + t * ray.direction;
+  return vec3(ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y,
+    ray.origin.z + t * (ray.direction.z + t * ray.bend));
 }
 
 vec2 reliefRayUV(ReliefRay ray, float t)
@@ -53,6 +56,7 @@ ReliefRay reliefViewRay(vec2 entryUV, vec3 direction)
   ReliefRay ray;
   ray.origin = vec3(entryUV.x, entryUV.y, 0.0f);
   ray.direction = vec3(direction.x / descent, direction.y / descent, 1.0f);
+  ray.bend = 0.0f;
   return ray;
 }
 
@@ -68,6 +72,7 @@ ReliefRay reliefLightRay(vec3 hitPosition, vec3 lightDirection)
   ReliefRay ray;
   ray.origin = vec3(hitPosition.x + lightDirection.x * run, hitPosition.y + lightDirection.y * run, 0.0f);
   ray.direction = hitPosition - ray.origin;
+  ray.bend = 0.0f;
   return ray;
 }
 

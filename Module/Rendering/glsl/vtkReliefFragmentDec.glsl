@@ -20,6 +20,9 @@ in vec3 reliefNormalVSOutput;
 in vec3 reliefTangentVSOutput;
 in vec2 reliefTCoordVSOutput;
 in vec2 reliefTextureScaleVSOutput;
+#ifdef RELIEF_QUADRIC
+in vec2 reliefQuadricVSOutput;
+#endif
 
 // Derivatives of the entry coordinates, taken once outside the search loops: every read
 // at a ray point uses the mipmap level they give, exactly the level textureGrad with

@@ -15,12 +15,36 @@
   vec3 reliefViewVC =
     cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
 
-  // search
+  // search; the hit's distance along the view ray (world units), and the tilt of the
+  // reference surface there (the quadric's slope; none for the flat frame)
+  float reliefHitDistance = 0.0;
+  vec2 reliefSurfaceSlope = vec2(0.0);
   if (reliefDepthScale > 0.0)
   {
+#ifdef RELIEF_QUADRIC
+    // the curved frame (seed 000 s3.1-3.4): the view ray bends below the quadric; a ray
+    // that comes back out of it without meeting the relief is past the silhouette
+    vec3 reliefViewTF = vec3(dot(reliefViewVC, reliefFrameT), dot(reliefViewVC, reliefFrameB),
+      dot(reliefViewVC, reliefFrameN));
+    vec2 reliefQuadric = gl_FrontFacing ? reliefQuadricVSOutput : -reliefQuadricVSOutput;
+    vec2 reliefTerms = reliefQuadricDepthTerms(reliefViewTF, reliefQuadric, reliefDepthScale);
+    float reliefRange = reliefQuadricRange(reliefTerms);
+    ReliefRay reliefViewRayTS = reliefQuadricViewRay(
+      reliefTCoordVSOutput, reliefViewTF, reliefScale, reliefTerms, reliefRange);
+    reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
+    if (!reliefViewHit.hit && reliefQuadricLeaves(reliefViewRayTS))
+    {
+      discard;
+    }
+    reliefHitDistance = reliefViewHit.t * reliefRange;
+    reliefSurfaceSlope = -2.0 * reliefQuadric * reliefViewTF.xy * reliefHitDistance;
+#else
     ReliefRay reliefViewRayTS =
       reliefViewRay(reliefTCoordVSOutput, reliefToTexture(reliefViewVC));
     reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
+    reliefHitDistance = reliefViewHit.position.z * reliefDepthScale /
+      max(-dot(reliefViewVC, reliefFrameN), 1e-6);
+#endif
   }
   else
   {
@@ -37,12 +61,10 @@
   // (Mesa's llvmpipe stalls on mipmapped 8-bit reads far from it; grazing rays run far).
   // A colour texture that does not repeat reads right wherever the hit stays that close.
   reliefHitTCoord -= round(reliefHitTCoord - reliefTCoordVSOutput);
-  float reliefDescent = max(-dot(reliefViewVC, reliefFrameN), 1e-6);
-  vec3 reliefHitVC = reliefPositionVSOutput +
-    reliefViewVC * (reliefViewHit.position.z * max(reliefDepthScale, 0.0) / reliefDescent);
+  vec3 reliefHitVC = reliefPositionVSOutput + reliefViewVC * reliefHitDistance;
   vec2 reliefSlope =
     reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0) / reliefScale;
-  vec3 reliefNormalTS = normalize(vec3(reliefSlope, 1.0));
+  vec3 reliefNormalTS = normalize(vec3(reliefSlope + reliefSurfaceSlope, 1.0));
   vec3 reliefLitNormalVC = normalize(reliefFrameT * reliefNormalTS.x +
     reliefFrameB * reliefNormalTS.y + reliefFrameN * reliefNormalTS.z);
   vec4 reliefHitDC = reliefVCDCMatrix * vec4(reliefHitVC, 1.0);

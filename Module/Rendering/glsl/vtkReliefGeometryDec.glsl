@@ -9,3 +9,7 @@ out vec3 reliefNormalGSOutput;
 out vec3 reliefTangentGSOutput;
 out vec2 reliefTCoordGSOutput;
 out vec2 reliefTextureScaleGSOutput;
+#ifdef RELIEF_QUADRIC
+in vec2 reliefQuadricVSOutput[];
+out vec2 reliefQuadricGSOutput;
+#endif

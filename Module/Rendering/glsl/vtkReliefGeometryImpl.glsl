@@ -3,3 +3,6 @@
     reliefTangentGSOutput = reliefTangentVSOutput[i];
     reliefTCoordGSOutput = reliefTCoordVSOutput[i];
     reliefTextureScaleGSOutput = reliefTextureScaleVSOutput[i];
+#ifdef RELIEF_QUADRIC
+    reliefQuadricGSOutput = reliefQuadricVSOutput[i];
+#endif

@@ -11,3 +11,7 @@ out vec3 reliefNormalVSOutput;
 out vec3 reliefTangentVSOutput;
 out vec2 reliefTCoordVSOutput;
 out vec2 reliefTextureScaleVSOutput;
+#ifdef RELIEF_QUADRIC
+in vec2 reliefQuadricMC; // (a, b) of vtkLocalQuadricFilter, model units
+out vec2 reliefQuadricVSOutput;
+#endif

@@ -12,3 +12,8 @@
   reliefTextureScaleVSOutput = reliefTextureScaleMC *
     vec2(length(reliefTangentView), length(reliefBitangentView));
   reliefTCoordVSOutput = reliefTCoordMC;
+#ifdef RELIEF_QUADRIC
+  // curvature is 1 / length: an actor's scale k turns a into a / k; NaN is a plane
+  reliefQuadricVSOutput = any(isnan(reliefQuadricMC)) || any(isinf(reliefQuadricMC)) ?
+    vec2(0.0) : reliefQuadricMC / vec2(length(reliefTangentView), length(reliefBitangentView));
+#endif

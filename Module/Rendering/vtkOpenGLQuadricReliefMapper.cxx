@@ -1,0 +1,106 @@
+#include "vtkOpenGLQuadricReliefMapper.h"
+
+#include "vtkDataArray.h"
+#include "vtkLocalQuadricFilter.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkReliefForwardMessages.h"
+
+vtkStandardNewMacro(vtkOpenGLQuadricReliefMapper);
+
+namespace
+{
+constexpr const char* QuadricAttribute = "reliefQuadricMC";
+}
+
+vtkOpenGLQuadricReliefMapper::vtkOpenGLQuadricReliefMapper()
+  : QuadricFilter(vtkLocalQuadricFilter::New())
+{
+  vtkReliefForwardMessages(this->QuadricFilter, this);
+}
+
+vtkOpenGLQuadricReliefMapper::~vtkOpenGLQuadricReliefMapper()
+{
+  this->QuadricFilter->Delete();
+}
+
+vtkLocalQuadricFilter* vtkOpenGLQuadricReliefMapper::GetLocalQuadricFilter()
+{
+  return this->QuadricFilter;
+}
+
+bool vtkOpenGLQuadricReliefMapper::HasUsableQuadrics(vtkPolyData* mesh)
+{
+  vtkDataArray* quadrics =
+    mesh->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName());
+  if (!quadrics)
+  {
+    return false;
+  }
+  if (quadrics->GetNumberOfComponents() == 2 &&
+    quadrics->GetNumberOfTuples() == mesh->GetNumberOfPoints())
+  {
+    return true;
+  }
+  if (this->WarnedQuadricsTime != mesh->GetMTime())
+  {
+    this->WarnedQuadricsTime = mesh->GetMTime();
+    vtkWarningMacro("The mesh's \"" << vtkLocalQuadricFilter::QuadricArrayName() << "\" array has "
+                    << quadrics->GetNumberOfComponents() << " component(s) and "
+                    << quadrics->GetNumberOfTuples() << " tuple(s), not 2 and one a point ("
+                    << mesh->GetNumberOfPoints()
+                    << "): computing the quadrics instead. Remove it, or give "
+                       "vtkLocalQuadricFilter's output.");
+  }
+  return false;
+}
+
+bool vtkOpenGLQuadricReliefMapper::UpdateReliefSurface()
+{
+  if (this->HasUsableQuadrics(this->CurrentInput))
+  {
+    return this->Superclass::UpdateReliefSurface();
+  }
+  // the quadric filter frames the mesh itself (vtkReliefTangentFrameFilter) and runs
+  // again only when the mesh changes
+  this->QuadricFilter->SetInputData(this->CurrentInput);
+  this->QuadricFilter->Update();
+  vtkPolyData* framed = this->QuadricFilter->GetOutput();
+  if (!framed->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName()))
+  {
+    return false; // no texture coordinates or polygons: the filter has said so
+  }
+  this->CurrentInput = framed;
+  return true;
+}
+
+void vtkOpenGLQuadricReliefMapper::MapReliefAttributes(bool relief)
+{
+  this->Superclass::MapReliefAttributes(relief);
+  this->MapReliefAttribute(
+    QuadricAttribute, relief ? vtkLocalQuadricFilter::QuadricArrayName() : nullptr);
+}
+
+bool vtkOpenGLQuadricReliefMapper::SupportsSearchMethod(int method)
+{
+  return method == LINEAR || method == LINEAR_BINARY || method == SECANT;
+}
+
+const char* vtkOpenGLQuadricReliefMapper::GetUnsupportedSearchReason()
+{
+  return "its cells, radii, cones or pyramid assume depth linear along a straight line in "
+         "texture space, and below a quadric the ray's depth is quadratic.";
+}
+
+std::string vtkOpenGLQuadricReliefMapper::GetFrameDefines()
+{
+  return "#define RELIEF_QUADRIC\n";
+}
+
+void vtkOpenGLQuadricReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LocalQuadricFilter:\n";
+  this->QuadricFilter->PrintSelf(os, indent.GetNextIndent());
+}

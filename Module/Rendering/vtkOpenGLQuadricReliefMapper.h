@@ -1,0 +1,69 @@
+/**
+ * @class   vtkOpenGLQuadricReliefMapper
+ * @brief   relief mapping on curved surfaces, with correct silhouettes
+ *
+ * Oliveira and Policarpo 2005, "An Efficient Representation for Surface Details": the
+ * height field is laid below a quadric that follows the surface around each fragment,
+ * z = a x^2 + b y^2 in its tangent frame, interpolated from per-point coefficients
+ * (vtkLocalQuadricFilter). The straight view ray's depth below that quadric is
+ * quadratic along it (Eq. 7, the approximate distance); the search follows it from the
+ * polygon to depth 1 or until it comes back out of the quadric (s3.3), and a ray that
+ * comes back out without meeting the relief is silhouette: the fragment is discarded,
+ * and the relief carves the object's outline. Texture coordinates advance with the
+ * texture scale s_x, s_y (Eq. 8-9); the hit's true depth is written (s3.5); the lit
+ * normal combines the relief's slope and the quadric's at the hit.
+ *
+ * Everything else is vtkOpenGLReliefMapper's. The quadrics are the input's point
+ * array "ReliefQuadric" when it has a usable one (two components, one tuple a point);
+ * otherwise the mapper computes them once per change of the mesh, with one warning if
+ * the input's array was unusable. NaN coefficients are taken as a plane.
+ *
+ * Search methods: Linear, LinearBinary and Secant sample the ray wherever it goes, so
+ * they follow the curved ray exactly as the straight one. ExactDDA, SafetyRadius,
+ * ConeStep and MaximumMipmap walk cells, radii, cones or pyramid nodes along a
+ * straight line in texture space, assuming depth linear along it; below a quadric it
+ * is not, so they are not offered: they fall back to LinearBinary with one warning.
+ * Self-shadowing follows the light from the hit in the tangent plane of the fragment
+ * (flat), an approximation on curved surfaces.
+ */
+#ifndef vtkOpenGLQuadricReliefMapper_h
+#define vtkOpenGLQuadricReliefMapper_h
+
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkReliefRenderingModule.h" // For export macro
+
+class vtkLocalQuadricFilter;
+
+class VTKRELIEFRENDERING_EXPORT vtkOpenGLQuadricReliefMapper : public vtkOpenGLReliefMapper
+{
+public:
+  static vtkOpenGLQuadricReliefMapper* New();
+  vtkTypeMacro(vtkOpenGLQuadricReliefMapper, vtkOpenGLReliefMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The filter that computes the quadrics when the input has none, to configure it.
+  vtkLocalQuadricFilter* GetLocalQuadricFilter();
+
+protected:
+  vtkOpenGLQuadricReliefMapper();
+  ~vtkOpenGLQuadricReliefMapper() override;
+
+  bool UpdateReliefSurface() override;
+  void MapReliefAttributes(bool relief) override;
+  bool SupportsSearchMethod(int method) override;
+  const char* GetUnsupportedSearchReason() override;
+  std::string GetFrameDefines() override;
+
+  /// True when the input carries usable quadrics; warns once per mesh when it carries
+  /// unusable ones.
+  bool HasUsableQuadrics(vtkPolyData* mesh);
+
+  vtkLocalQuadricFilter* QuadricFilter;
+  vtkMTimeType WarnedQuadricsTime = 0;
+
+private:
+  vtkOpenGLQuadricReliefMapper(const vtkOpenGLQuadricReliefMapper&) = delete;
+  void operator=(const vtkOpenGLQuadricReliefMapper&) = delete;
+};
+
+#endif

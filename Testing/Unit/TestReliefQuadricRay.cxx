@@ -1,0 +1,165 @@
+// The quadric frame's view ray (vtkReliefQuadric.glsl, seed 000 s3.1-3.3), run on the CPU
+// through the same source the GPU compiles: its depth below the quadric, its search
+// range, the silhouette test, and the sampled searches following it.
+#include "ReliefCpuMirror.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace
+{
+using namespace ReliefCpuMirror;
+
+constexpr float DepthScale = 0.05f;
+const vec2 Scale(0.5f, 0.25f); // world length of one texture unit along x and y
+
+// A unit view direction in the tangent frame, `tilt` radians from the inward normal.
+vec3 View(float tilt, float azimuth)
+{
+  return vec3(std::sin(tilt) * std::cos(azimuth), std::sin(tilt) * std::sin(azimuth),
+    -std::cos(tilt));
+}
+
+// Depth below z = a x^2 + b y^2 (in DepthScale units) of the point at distance d along
+// the view ray: Eq. 7, written out independently.
+double DepthBelow(vec3 view, vec2 quadric, double d)
+{
+  const double x = view.x * d;
+  const double y = view.y * d;
+  const double z = view.z * d;
+  return (quadric.x * x * x + quadric.y * y * y - z) / DepthScale;
+}
+
+struct CurvedRay
+{
+  ReliefRay Ray;
+  float Range;
+};
+
+CurvedRay MakeRay(vec3 view, vec2 quadric)
+{
+  const vec2 terms = reliefQuadricDepthTerms(view, quadric, DepthScale);
+  const float range = reliefQuadricRange(terms);
+  return { reliefQuadricViewRay(vec2(0.3f, 0.6f), view, Scale, terms, range), range };
+}
+
+class ReliefQuadricRay : public ::testing::Test
+{
+protected:
+  void Use(const DepthField& field)
+  {
+    this->Field = field;
+    CurrentField = &this->Field;
+  }
+  DepthField Field;
+};
+}
+
+TEST_F(ReliefQuadricRay, DepthAndTextureCoordinatesFollowTheQuadric)
+{
+  // along the ray, the depth is the distance below the quadric and u, v advance by the
+  // run over the texture scale (Eq. 9), for bowls, domes and saddles alike
+  const vec2 quadrics[] = { { -0.8f, -0.8f }, { 0.5f, 0.3f }, { 0.6f, -0.4f }, { 0.0f, 0.0f } };
+  for (vec2 quadric : quadrics)
+  {
+    for (float tilt : { 0.2f, 0.8f, 1.3f })
+    {
+      const vec3 view = View(tilt, 0.7f);
+      const CurvedRay curved = MakeRay(view, quadric);
+      for (float t : { 0.0f, 0.25f, 0.5f, 1.0f })
+      {
+        const vec3 point = reliefRayAt(curved.Ray, t);
+        const double distance = double(t) * curved.Range;
+        EXPECT_NEAR(point.z, DepthBelow(view, quadric, distance), 1e-4);
+        EXPECT_NEAR(point.x, 0.3 + view.x * distance / Scale.x, 1e-5);
+        EXPECT_NEAR(point.y, 0.6 + view.y * distance / Scale.y, 1e-5);
+      }
+    }
+  }
+}
+
+TEST_F(ReliefQuadricRay, TheRangeEndsAtDepthOneOrBackOnTheQuadric)
+{
+  // flat: depth 1 at DepthScale / cos(tilt), as the straight ray of the flat frame
+  const vec3 view = View(0.6f, 0.3f);
+  const CurvedRay flat = MakeRay(view, vec2(0.0f, 0.0f));
+  EXPECT_NEAR(flat.Range, DepthScale / std::cos(0.6f), 1e-6);
+  EXPECT_NEAR(reliefRayAt(flat.Ray, 1.0f).z, 1.0f, 1e-5);
+  EXPECT_FALSE(reliefQuadricLeaves(flat.Ray));
+  const ReliefRay straight = reliefViewRay(vec2(0.3f, 0.6f),
+    vec3(view.x / Scale.x / std::abs(view.z) * DepthScale,
+      view.y / Scale.y / std::abs(view.z) * DepthScale, 1.0f));
+  for (float t : { 0.3f, 1.0f })
+  {
+    EXPECT_NEAR(reliefRayAt(flat.Ray, t).x, reliefRayAt(straight, t).x, 1e-5);
+    EXPECT_NEAR(reliefRayAt(flat.Ray, t).y, reliefRayAt(straight, t).y, 1e-5);
+    EXPECT_NEAR(reliefRayAt(flat.Ray, t).z, reliefRayAt(straight, t).z, 1e-5);
+  }
+
+  // a dome (sphere of radius 0.5 seen from outside): a steep ray reaches depth 1, a
+  // grazing one comes back to the quadric first, which is the silhouette
+  const vec2 dome(-1.0f, -1.0f);
+  const CurvedRay steep = MakeRay(View(0.3f, 0.0f), dome);
+  EXPECT_NEAR(reliefRayAt(steep.Ray, 1.0f).z, 1.0f, 1e-4);
+  EXPECT_FALSE(reliefQuadricLeaves(steep.Ray));
+  const CurvedRay grazing = MakeRay(View(1.5f, 0.0f), dome);
+  EXPECT_NEAR(reliefRayAt(grazing.Ray, 1.0f).z, 0.0f, 1e-4);
+  EXPECT_TRUE(reliefQuadricLeaves(grazing.Ray));
+  for (float t = 0.05f; t < 1.0f; t += 0.05f)
+  {
+    EXPECT_GT(reliefRayAt(grazing.Ray, t).z, 0.0f) << t; // inside the whole way
+    EXPECT_LT(reliefRayAt(grazing.Ray, t).z, 1.0f) << t;
+  }
+  // a bowl (the inside of a sphere) never lets a ray out: depth 1 is always reached
+  const CurvedRay bowl = MakeRay(View(1.5f, 0.0f), vec2(1.0f, 1.0f));
+  EXPECT_NEAR(reliefRayAt(bowl.Ray, 1.0f).z, 1.0f, 1e-4);
+  EXPECT_FALSE(reliefQuadricLeaves(bowl.Ray));
+}
+
+TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)
+{
+  // a level field at depth 0.4 below a dome: a ray that reaches 0.4 is met where the
+  // quadratic depth first equals it; one that turns back before is silhouette
+  Use(DepthField::FromFunction(16, 16, [](float, float) { return 0.4f; }));
+  const vec2 dome(-2.0f, -1.0f);
+  int hits = 0;
+  int silhouettes = 0;
+  std::mt19937 generator(11);
+  std::uniform_real_distribution<float> tilt(0.0f, 1.55f);
+  std::uniform_real_distribution<float> azimuth(0.0f, 6.2831853f);
+  for (int k = 0; k < 2000; ++k)
+  {
+    const vec3 view = View(tilt(generator), azimuth(generator));
+    const CurvedRay curved = MakeRay(view, dome);
+    // the analytic answer: A d^2 + B d = 0.4, or none when the maximum depth falls short
+    const vec2 terms = reliefQuadricDepthTerms(view, dome, DepthScale);
+    const double A = terms.x;
+    const double B = terms.y;
+    const double deepest = A < 0.0 ? -B * B / (4.0 * A) : 1e30;
+    for (int method = 0; method < 3; ++method)
+    {
+      const ReliefHit hit = method == 0 ? reliefSearchLinearBinary(curved.Ray, 64, 16)
+        : method == 1                   ? reliefSearchSecant(curved.Ray, 64, 8)
+                                        : reliefSearchLinear(curved.Ray, 2048);
+      if (deepest < 0.4 - 1e-3)
+      {
+        ASSERT_FALSE(hit.hit) << "method " << method;
+        ASSERT_TRUE(reliefQuadricLeaves(curved.Ray)) << "method " << method;
+        silhouettes += method == 0 ? 1 : 0;
+      }
+      else if (deepest > 0.4 + 1e-3)
+      {
+        ASSERT_TRUE(hit.hit) << "method " << method;
+        const double distance = 2.0 * 0.4 / (B + std::sqrt(B * B + 4.0 * A * 0.4));
+        ASSERT_NEAR(hit.t * curved.Range, distance, 2e-3 * curved.Range) << "method " << method;
+        hits += method == 0 ? 1 : 0;
+      }
+    }
+  }
+  std::cout << "dome over a level field: " << hits << " hits, " << silhouettes
+            << " silhouette rays of 2000\n";
+  EXPECT_GT(hits, 200);
+  EXPECT_GT(silhouettes, 200);
+}
