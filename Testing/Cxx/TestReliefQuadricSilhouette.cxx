@@ -1,0 +1,189 @@
+// vtkOpenGLQuadricReliefMapper: cobblestones on a coarse sphere and torus carve their
+// outlines (seed 000 Fig. 9 and 15), where the flat frame keeps the polygons'. The
+// baseline shows both shapes; beside it the test checks that the outline really moves
+// (pixels the flat frame covers are uncovered), that NaN quadrics draw as the flat
+// frame does, that a quadric array of the wrong size is recomputed with one warning,
+// and that a grid search falls back to LinearBinary with one warning.
+#include "ReliefEventRecorder.h"
+#include "ReliefScene.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLocalQuadricFilter.h"
+#include "vtkNew.h"
+#include "vtkOpenGLQuadricReliefMapper.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtkTextureMapToSphere.h"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+namespace
+{
+// A coarse sphere (24 x 12 facets) with four by two tiles of texture around it.
+vtkSmartPointer<vtkPolyData> Sphere()
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(0.5);
+  source->SetThetaResolution(24);
+  source->SetPhiResolution(12);
+  vtkNew<vtkTextureMapToSphere> texture;
+  texture->SetInputConnection(source->GetOutputPort());
+  texture->PreventSeamOff();
+  texture->Update();
+  auto sphere = vtkSmartPointer<vtkPolyData>::New();
+  sphere->DeepCopy(texture->GetOutput());
+  ReliefScene::TileTextureCoordinates(sphere, 4.0, 2.0);
+  return sphere;
+}
+
+// The mapper of a shape in its own viewport, seen from the side, lit from the upper left.
+template <typename Mapper>
+vtkSmartPointer<Mapper> Show(vtkRenderWindow* window, vtkPolyData* shape, double left, double right)
+{
+  auto mapper = vtkSmartPointer<Mapper>::New();
+  mapper->SetInputData(shape);
+  mapper->SetHeightMapData(ReliefScene::ReadImage("stones_height.png"));
+  mapper->SetDepthScale(0.06);
+  mapper->SetLinearSteps(32);
+  mapper->SetBinarySteps(6);
+  auto renderer = ReliefScene::LitRenderer(window, 600, 300);
+  renderer->SetViewport(left, 0.0, right, 1.0);
+  auto actor = ReliefScene::ReliefActor(mapper, "stones_color.png");
+  // closed shapes: a ray that leaves the quadric must see what lies behind the object,
+  // not the relief of its far side's inner faces
+  actor->GetProperty()->BackfaceCullingOn();
+  renderer->AddActor(actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 3.0, 1.2);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  renderer->ResetCameraClippingRange();
+  return mapper;
+}
+
+// Pixels of the window that show the background colour (the renderer's, 0.1 0.12 0.16).
+long BackgroundPixels(vtkRenderWindow* window)
+{
+  window->Render();
+  const std::vector<unsigned char> pixels = ReliefScene::Pixels(window);
+  long count = 0;
+  for (size_t k = 0; k + 2 < pixels.size(); k += 3)
+  {
+    count += std::abs(pixels[k] - 26) <= 1 && std::abs(pixels[k + 1] - 31) <= 1 &&
+        std::abs(pixels[k + 2] - 41) <= 1
+      ? 1
+      : 0;
+  }
+  return count;
+}
+
+double MeanDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  double sum = 0.0;
+  for (size_t k = 0; k < a.size(); ++k)
+  {
+    sum += std::abs(int(a[k]) - int(b[k]));
+  }
+  return sum / static_cast<double>(a.size());
+}
+}
+
+int TestReliefQuadricSilhouette(int argc, char* argv[])
+{
+  int failures = 0;
+  auto check = [&failures](bool condition, const char* what) {
+    if (!condition)
+    {
+      std::cerr << "ERROR: " << what << "\n";
+      ++failures;
+    }
+  };
+
+  // the outline moves: the flat frame covers pixels the quadric frame carves away
+  auto sphere = Sphere();
+  auto torus = ReliefScene::Torus();
+  {
+    vtkNew<vtkRenderWindow> flatWindow;
+    flatWindow->SetOffScreenRendering(1);
+    Show<vtkOpenGLReliefMapper>(flatWindow, sphere, 0.0, 0.5);
+    Show<vtkOpenGLReliefMapper>(flatWindow, torus, 0.5, 1.0);
+    vtkNew<vtkRenderWindow> curvedWindow;
+    curvedWindow->SetOffScreenRendering(1);
+    Show<vtkOpenGLQuadricReliefMapper>(curvedWindow, sphere, 0.0, 0.5);
+    Show<vtkOpenGLQuadricReliefMapper>(curvedWindow, torus, 0.5, 1.0);
+    const long flat = BackgroundPixels(flatWindow);
+    const long curved = BackgroundPixels(curvedWindow);
+    std::cout << "background pixels: flat frame " << flat << ", quadric frame " << curved << "\n";
+    check(curved > flat + 2000, "the quadric frame carves the outline");
+  }
+
+  // NaN coefficients are a plane: the image of the flat frame
+  {
+    auto nanSphere = vtkSmartPointer<vtkPolyData>::New();
+    nanSphere->DeepCopy(sphere);
+    vtkNew<vtkFloatArray> quadrics;
+    quadrics->SetName(vtkLocalQuadricFilter::QuadricArrayName());
+    quadrics->SetNumberOfComponents(2);
+    quadrics->SetNumberOfTuples(nanSphere->GetNumberOfPoints());
+    quadrics->Fill(std::numeric_limits<float>::quiet_NaN());
+    nanSphere->GetPointData()->AddArray(quadrics);
+    vtkNew<vtkRenderWindow> flatWindow;
+    flatWindow->SetOffScreenRendering(1);
+    Show<vtkOpenGLReliefMapper>(flatWindow, sphere, 0.0, 1.0);
+    vtkNew<vtkRenderWindow> nanWindow;
+    nanWindow->SetOffScreenRendering(1);
+    Show<vtkOpenGLQuadricReliefMapper>(nanWindow, nanSphere, 0.0, 1.0);
+    flatWindow->Render();
+    nanWindow->Render();
+    const double difference =
+      MeanDifference(ReliefScene::Pixels(flatWindow), ReliefScene::Pixels(nanWindow));
+    std::cout << "NaN quadrics against the flat frame: mean difference " << difference
+              << " levels\n";
+    check(difference < 0.5, "NaN quadrics draw as the flat frame");
+  }
+
+  // bad quadric arrays and grid searches: one warning each, then it draws
+  vtkNew<vtkRenderWindow> window;
+  auto badSphere = vtkSmartPointer<vtkPolyData>::New();
+  badSphere->DeepCopy(sphere);
+  vtkNew<vtkFloatArray> wrong;
+  wrong->SetName(vtkLocalQuadricFilter::QuadricArrayName());
+  wrong->SetNumberOfComponents(3);
+  wrong->SetNumberOfTuples(badSphere->GetNumberOfPoints());
+  wrong->Fill(1.0);
+  badSphere->GetPointData()->AddArray(wrong);
+  auto sphereMapper = Show<vtkOpenGLQuadricReliefMapper>(window, badSphere, 0.0, 0.5);
+  auto torusMapper = Show<vtkOpenGLQuadricReliefMapper>(window, torus, 0.5, 1.0);
+  vtkNew<ReliefEventRecorder> messages;
+  sphereMapper->AddObserver(vtkCommand::WarningEvent, messages);
+  sphereMapper->AddObserver(vtkCommand::ErrorEvent, messages);
+  window->Render();
+  window->Render();
+  check(messages->Count(vtkCommand::WarningEvent) == 1 &&
+      messages->AnyMessageContains(vtkLocalQuadricFilter::QuadricArrayName()),
+    "a quadric array of the wrong size: one warning");
+  messages->Clear();
+  sphereMapper->SetSearchMethodToConeStep();
+  window->Render();
+  window->Render();
+  check(messages->Count(vtkCommand::WarningEvent) == 1 && messages->AnyMessageContains("ConeStep"),
+    "a grid search: one warning");
+  check(sphereMapper->GetActiveSearchMethod() == vtkOpenGLReliefMapper::LINEAR_BINARY,
+    "a grid search falls back to LinearBinary");
+  sphereMapper->SetSearchMethodToLinearBinary();
+  window->Render();
+
+  const int image = vtkRegressionTestImage(window);
+  return failures == 0 && image == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+}
