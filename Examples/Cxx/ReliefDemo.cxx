@@ -101,6 +101,9 @@ int main(int argc, char* argv[])
       [](vtkRenderWindow* w) { ReliefScene::ShowPlainBesideRelief(w, 800, 400); } },
     { "stones_torus", "relief on a curved, coarse mesh",
       [](vtkRenderWindow* w) { ReliefScene::ShowTorus(w, 640, 480); } },
+    { "quadric_silhouettes",
+      "the flat frame (left) and the quadric frame (right) on a coarse torus",
+      [](vtkRenderWindow* w) { ReliefScene::ShowQuadricSilhouettes(w, 800, 400); } },
     { "self_shadowing", "self-shadowing on (left) and off (right)",
       [](vtkRenderWindow* w) { ReliefScene::ShowSelfShadowing(w, 800, 400); } },
     { "interpenetration", "depth correction on (left) and off (right) with a plain sphere",
@@ -132,7 +135,7 @@ int main(int argc, char* argv[])
       WriteWindow(window, path);
     }
     int* size = window->GetSize();
-    std::printf("  %-21s %4dx%-4d %7.1f ms/frame  %s\n", (std::string(scene.Name) + ".png").c_str(),
+    std::printf("  %-23s %4dx%-4d %7.1f ms/frame  %s\n", (std::string(scene.Name) + ".png").c_str(),
       size[0], size[1], milliseconds, scene.Shows);
   }
   return 0;

@@ -8,6 +8,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPlaneSource.h"
@@ -372,6 +373,42 @@ void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height)
     }
     renderer->AddActor(ReliefActor(mapper, "bricks_color.png"));
     ViewSquare(renderer, 50.0);
+  }
+}
+
+void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
+{
+  auto torus = Torus();
+  for (bool quadric : { false, true })
+  {
+    auto renderer = LitRenderer(window, width, height);
+    renderer->SetViewport(quadric ? 0.5 : 0.0, 0.0, quadric ? 1.0 : 0.5, 1.0);
+    vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+    light->SetPosition(-1.0, -1.0, 1.0);
+    vtkSmartPointer<vtkOpenGLReliefMapper> mapper;
+    if (quadric)
+    {
+      mapper = vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New();
+    }
+    else
+    {
+      mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+    }
+    mapper->SetInputData(torus);
+    mapper->SetHeightMapData(ReadImage("stones_height.png"));
+    mapper->SetDepthScale(0.05);
+    mapper->SetLinearSteps(32);
+    mapper->SetBinarySteps(6);
+    auto actor = ReliefActor(mapper, "stones_color.png");
+    // a closed shape: past the silhouette lies the background, not the far side's inside
+    actor->GetProperty()->BackfaceCullingOn();
+    renderer->AddActor(actor);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.3, 0.0, 0.25);
+    camera->SetPosition(0.3, -2.0, 0.6);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(20.0);
+    renderer->ResetCameraClippingRange();
   }
 }
 

@@ -95,6 +95,9 @@ void ShowSelfShadowing(vtkRenderWindow* window, int width, int height);
 void ShowInterpenetration(vtkRenderWindow* window, int width, int height);
 /// Plain texture mapping (left half) beside relief mapping (right half) of the same bricks.
 void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height);
+/// Stones on a coarse torus, close on its outline: the flat frame (left) keeps the
+/// polygons' silhouette, the quadric frame (right) lets the relief carve it.
+void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height);
 ///@}
 
 /// Wall-clock milliseconds of each of `frames` renders after `warmup` renders.

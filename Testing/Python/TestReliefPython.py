@@ -23,7 +23,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
 
 import vtkrelief
 from vtkrelief import (vtkConeStepMapFilter, vtkLocalQuadricFilter, vtkMaximumMipmapFilter,
-                       vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefDisplacementFilter,
+                       vtkOpenGLQuadricReliefMapper, vtkOpenGLReliefMapper,
+                       vtkOpenImageIOReader, vtkReliefDisplacementFilter,
                        vtkReliefTangentFrameFilter, vtkReliefTextureFilter,
                        vtkSafetyRadiusFilter)
 
@@ -57,7 +58,7 @@ class TestReliefPython(unittest.TestCase):
         for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
                     vtkReliefTangentFrameFilter, vtkMaximumMipmapFilter,
                     vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkReliefDisplacementFilter,
-                    vtkLocalQuadricFilter):
+                    vtkLocalQuadricFilter, vtkOpenGLQuadricReliefMapper):
             self.assertIs(getattr(vtkrelief, cls.__name__), cls)
             self.assertEqual(cls().GetClassName(), cls.__name__)
 
@@ -191,6 +192,11 @@ class TestReliefPython(unittest.TestCase):
         numpy.testing.assert_allclose(coefficients[middle], -0.25, rtol=0.03)
         count = mesh.GetFieldData().GetArray(vtkLocalQuadricFilter.FallbackCountArrayName())
         self.assertEqual(count.GetValue(0), quadrics.GetNumberOfFallbacks())
+        # the curved frame's mapper is a relief mapper whose quadric filter is configurable
+        mapper = vtkOpenGLQuadricReliefMapper()
+        self.assertIsInstance(mapper, vtkOpenGLReliefMapper)
+        mapper.GetLocalQuadricFilter().SetNeighbourhoodRings(2)
+        self.assertEqual(mapper.GetLocalQuadricFilter().GetNeighbourhoodRings(), 2)
 
 
 class TestSampleCountRender(unittest.TestCase):
