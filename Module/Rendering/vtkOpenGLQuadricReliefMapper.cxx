@@ -95,12 +95,36 @@ const char* vtkOpenGLQuadricReliefMapper::GetUnsupportedSearchReason()
 
 std::string vtkOpenGLQuadricReliefMapper::GetFrameDefines()
 {
-  return "#define RELIEF_QUADRIC\n";
+  return this->DistanceMode == EXACT ? "#define RELIEF_QUADRIC\n#define RELIEF_EXACT_DISTANCE\n"
+                                     : "#define RELIEF_QUADRIC\n";
+}
+
+void vtkOpenGLQuadricReliefMapper::SetDistanceMode(int mode)
+{
+  if (mode != APPROXIMATE && mode != EXACT)
+  {
+    vtkErrorMacro("Unknown distance mode " << mode
+                                           << "; use SetDistanceModeToApproximate() or "
+                                              "SetDistanceModeToExact().");
+    return;
+  }
+  if (mode != this->DistanceMode)
+  {
+    this->DistanceMode = mode;
+    this->ShaderOptionsTime.Modified();
+    this->Modified();
+  }
+}
+
+const char* vtkOpenGLQuadricReliefMapper::GetDistanceModeAsString()
+{
+  return this->DistanceMode == EXACT ? "Exact" : "Approximate";
 }
 
 void vtkOpenGLQuadricReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "DistanceMode: " << this->GetDistanceModeAsString() << "\n";
   os << indent << "LocalQuadricFilter:\n";
   this->QuadricFilter->PrintSelf(os, indent.GetNextIndent());
 }

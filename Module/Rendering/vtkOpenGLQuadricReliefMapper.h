@@ -6,7 +6,8 @@
  * height field is laid below a quadric that follows the surface around each fragment,
  * z = a x^2 + b y^2 in its tangent frame, interpolated from per-point coefficients
  * (vtkLocalQuadricFilter). The straight view ray's depth below that quadric is
- * quadratic along it (Eq. 7, the approximate distance); the search follows it from the
+ * quadratic along it (Eq. 7, the approximate distance; SetDistanceModeToExact() for
+ * Eq. 6); the search follows it from the
  * polygon to depth 1 or until it comes back out of the quadric (s3.3), and a ray that
  * comes back out without meeting the relief is silhouette: the fragment is discarded,
  * and the relief carves the object's outline. Texture coordinates advance with the
@@ -44,6 +45,28 @@ public:
   /// The filter that computes the quadrics when the input has none, to configure it.
   vtkLocalQuadricFilter* GetLocalQuadricFilter();
 
+  enum DistanceModes
+  {
+    APPROXIMATE = 0, ///< Eq. 7: the depth below the quadric along the normal (default)
+    EXACT = 1        ///< Eq. 6 where the quadric bends away from the viewer both ways
+  };
+
+  ///@{
+  /**
+   * How the ray's depth below the quadric is measured. APPROXIMATE (default): along
+   * the fragment's normal, Eq. 7, everywhere. EXACT: from the ray point along the
+   * direction perpendicular to the ray in the plane of the ray and the normal, Eq. 6,
+   * where both principal curvatures bend away from the viewer (a < 0 and b < 0), and
+   * Eq. 7 elsewhere, as seed 000 does (s3.1-3.2; the paper finds it about half as
+   * fast). Changing it rebuilds the shader.
+   */
+  virtual void SetDistanceMode(int mode);
+  vtkGetMacro(DistanceMode, int);
+  void SetDistanceModeToApproximate() { this->SetDistanceMode(APPROXIMATE); }
+  void SetDistanceModeToExact() { this->SetDistanceMode(EXACT); }
+  const char* GetDistanceModeAsString();
+  ///@}
+
 protected:
   vtkOpenGLQuadricReliefMapper();
   ~vtkOpenGLQuadricReliefMapper() override;
@@ -59,6 +82,7 @@ protected:
   bool HasUsableQuadrics(vtkPolyData* mesh);
 
   vtkLocalQuadricFilter* QuadricFilter;
+  int DistanceMode = APPROXIMATE;
   vtkMTimeType WarnedQuadricsTime = 0;
 
 private:

@@ -197,6 +197,14 @@ class TestReliefPython(unittest.TestCase):
         self.assertIsInstance(mapper, vtkOpenGLReliefMapper)
         mapper.GetLocalQuadricFilter().SetNeighbourhoodRings(2)
         self.assertEqual(mapper.GetLocalQuadricFilter().GetNeighbourhoodRings(), 2)
+        self.assertEqual(mapper.GetDistanceModeAsString(), "Approximate")
+        mapper.SetDistanceModeToExact()
+        self.assertEqual(mapper.GetDistanceMode(), vtkOpenGLQuadricReliefMapper.EXACT)
+        errors = MessageRecorder(mapper, vtkCommand.ErrorEvent)
+        mapper.SetDistanceMode(7)  # unknown: one error, nothing changes
+        self.assertEqual(len(errors.messages), 1)
+        self.assertIn("SetDistanceModeToExact", errors.messages[0])
+        self.assertEqual(mapper.GetDistanceModeAsString(), "Exact")
 
 
 class TestSampleCountRender(unittest.TestCase):

@@ -124,6 +124,9 @@ inline vec4 CellDepths(vec2 cell)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
 #define RELIEF_CONE_STEP(cell) CurrentConeMap->At(cell)
 #define RELIEF_SAFETY_RADIUS(cell) CurrentRadii->At(cell)
+// the exact distance of the quadric frame is compiled in, as the quadric mapper's exact
+// mode does; rays without its terms read as without it
+#define RELIEF_EXACT_DISTANCE
 // shader functions are not inline: one copy per test source
 namespace
 {
@@ -142,6 +145,7 @@ namespace
 #undef RELIEF_PYRAMID_TOP
 #undef RELIEF_CONE_STEP
 #undef RELIEF_SAFETY_RADIUS
+#undef RELIEF_EXACT_DISTANCE
 }
 
 #endif

@@ -51,6 +51,7 @@ TEST_F(ReliefExactSearch, ReferenceCatchesTheSaddleThatRasterizationMisses)
   ray.origin = vec3((0.02f + 0.5f) / 2.0f, (0.98f + 0.5f) / 2.0f, 0.6f);
   ray.direction = vec3(0.48f, -0.48f, 0.01f);
   ray.bend = 0.0f;
+  ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   const double t = ReferenceHit(saddle, ray);
   EXPECT_GT(t, 0.2);
   EXPECT_LT(t, 0.5);

@@ -163,3 +163,62 @@ TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)
   EXPECT_GT(hits, 200);
   EXPECT_GT(silhouettes, 200);
 }
+
+TEST_F(ReliefQuadricRay, TheExactDistanceIsMeasuredPerpendicularToTheRay)
+{
+  // Eq. 5-6 where both curvatures bend away (a, b < 0): the point P + U s on the
+  // quadric, U perpendicular to the ray in the plane of the ray and the normal, found
+  // here by bisection; elsewhere, and head-on, the vertical distance (Eq. 7)
+  // (a cylinder's zero term, here 1e-6, is zero: Eq. 7)
+  const vec2 quadrics[] = { { -0.8f, -0.5f }, { -0.3f, -2.0f }, { 0.6f, -0.4f }, { 0.5f, 0.3f },
+    { -0.7f, 0.0f }, { -0.7f, -1e-6f } };
+  for (vec2 quadric : quadrics)
+  {
+    const bool convex = quadric.x < 0.0f && quadric.y < 0.0f && quadric.y != -1e-6f;
+    for (float tilt : { 0.0f, 0.4f, 1.0f, 1.45f })
+    {
+      const vec3 view = View(tilt, 0.9f);
+      const vec2 terms = reliefQuadricDepthTerms(view, quadric, DepthScale);
+      const float range = reliefQuadricRange(terms);
+      const ReliefRay ray = reliefQuadricExact(
+        reliefQuadricViewRay(vec2(0.3f, 0.6f), view, Scale, terms, range), view, quadric,
+        DepthScale, range);
+      const double sine = std::sqrt(1.0 - double(view.z) * view.z);
+      for (float t : { 0.1f, 0.4f, 0.8f })
+      {
+        const double d = double(t) * range;
+        const double vertical = DepthBelow(view, quadric, d);
+        double expected = vertical;
+        if (convex && sine > 1e-4)
+        {
+          const double u[3] = { -view.x * view.z / sine, -view.y * view.z / sine, sine };
+          const double p[3] = { view.x * d, view.y * d, view.z * d };
+          // g(s) = quadric height minus height at P + U s: positive below the quadric
+          auto below = [&](double s) {
+            const double x = p[0] + u[0] * s;
+            const double y = p[1] + u[1] * s;
+            return quadric.x * x * x + quadric.y * y * y - (p[2] + u[2] * s);
+          };
+          double low = 0.0;
+          double high = 1.0;
+          while (below(high) > 0.0)
+          {
+            high *= 2.0;
+          }
+          for (int k = 0; k < 80; ++k)
+          {
+            const double middle = 0.5 * (low + high);
+            (below(middle) > 0.0 ? low : high) = middle;
+          }
+          expected = (vertical > 0.0 ? low : -low) / DepthScale;
+          if (vertical <= 0.0)
+          {
+            continue; // above the quadric: the ray is outside, nothing to measure
+          }
+        }
+        EXPECT_NEAR(reliefRayAt(ray, t).z, expected, 1e-3 * std::max(1.0, std::abs(expected)))
+          << "a " << quadric.x << ", b " << quadric.y << ", tilt " << tilt << ", t " << t;
+      }
+    }
+  }
+}

@@ -17,6 +17,7 @@ struct ReliefRay
   vec3 direction; // change of (u, v, depth) from t = 0 to t = 1
   float bend;     // depth's t^2 term: 0 for a straight ray; below a curved surface's
                   // quadric the depth of a straight view ray is quadratic (vtkReliefQuadric)
+  vec4 exact;     // the exact distance's terms (vtkReliefQuadric); w = 0: not used
 };
 
 struct ReliefHit
@@ -28,10 +29,17 @@ struct ReliefHit
   int samples;   // height samples the search took
 };
 
+#ifdef RELIEF_EXACT_DISTANCE
+float reliefExactDepth(ReliefRay ray, float t, float verticalDepth);
+#endif
+
 vec3 reliefRayAt(ReliefRay ray, float t)
 {
-  return vec3(ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y,
-    ray.origin.z + t * (ray.direction.z + t * ray.bend));
+  float depth = ray.origin.z + t * (ray.direction.z + t * ray.bend);
+#ifdef RELIEF_EXACT_DISTANCE
+  depth = reliefExactDepth(ray, t, depth);
+#endif
+  return vec3(ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y, depth);
 }
 
 vec2 reliefRayUV(ReliefRay ray, float t)
@@ -57,6 +65,7 @@ ReliefRay reliefViewRay(vec2 entryUV, vec3 direction)
   ray.origin = vec3(entryUV.x, entryUV.y, 0.0f);
   ray.direction = vec3(direction.x / descent, direction.y / descent, 1.0f);
   ray.bend = 0.0f;
+  ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   return ray;
 }
 
@@ -73,6 +82,7 @@ ReliefRay reliefLightRay(vec3 hitPosition, vec3 lightDirection)
   ray.origin = vec3(hitPosition.x + lightDirection.x * run, hitPosition.y + lightDirection.y * run, 0.0f);
   ray.direction = hitPosition - ray.origin;
   ray.bend = 0.0f;
+  ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   return ray;
 }
 

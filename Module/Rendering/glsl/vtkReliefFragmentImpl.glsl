@@ -31,6 +31,10 @@
     float reliefRange = reliefQuadricRange(reliefTerms);
     ReliefRay reliefViewRayTS = reliefQuadricViewRay(
       reliefTCoordVSOutput, reliefViewTF, reliefScale, reliefTerms, reliefRange);
+#ifdef RELIEF_EXACT_DISTANCE
+    reliefViewRayTS = reliefQuadricExact(
+      reliefViewRayTS, reliefViewTF, reliefQuadric, reliefDepthScale, reliefRange);
+#endif
     reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
     if (!reliefViewHit.hit && reliefQuadricLeaves(reliefViewRayTS))
     {

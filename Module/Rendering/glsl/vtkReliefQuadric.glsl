@@ -12,6 +12,13 @@
 // B = -V.z / DepthScale: quadratic in t, which a ReliefRay's bend carries, so every
 // search that samples the ray (Linear, LinearBinary, Secant) follows it unchanged. Its
 // texture coordinates move by (V.x / s_x, V.y / s_y) per unit t (Eq. 9).
+//
+// The exact distance (Eq. 5-6, compiled with RELIEF_EXACT_DISTANCE) measures from P
+// along U, the unit vector perpendicular to V in the plane of V and the normal, to the
+// quadric: s solves a (P.x + U.x s)^2 + b (P.y + U.y s)^2 = P.z + U.z s. Seed 000 uses
+// it where both principal curvatures bend away from the viewer (here a, b < 0)
+// and Eq. 7 where the Gaussian curvature is negative or zero (saddles, cylinders,
+// planes, bowls), as it does when V is the normal (U undefined).
 
 // The quadric's depth terms (A, B) of the view direction `view` in the tangent frame;
 // a grazing ray's descent is held at 1e-3 of its run, as reliefViewRay() does.
@@ -47,8 +54,47 @@ ReliefRay reliefQuadricViewRay(vec2 entryUV, vec3 view, vec2 scale, vec2 terms, 
   ray.origin = vec3(entryUV.x, entryUV.y, 0.0f);
   ray.direction = vec3(view.x / scale.x * range, view.y / scale.y * range, terms.y * range);
   ray.bend = terms.x * range * range;
+  ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   return ray;
 }
+
+// Adds the exact distance's terms to a view ray of reliefQuadricViewRay() (same view,
+// quadric, DepthScale and range). With Q = a P.x^2 + b P.y^2 - P.z = DepthScale D (the
+// vertical depth D in depth units), A = a U.x^2 + b U.y^2 and B = 2 (a P.x U.x +
+// b P.y U.y) - U.z, Eq. 6's root is s = 2 Q / (-B + sqrt(B^2 - 4 A Q)), written so that
+// it holds as A goes to 0; B is linear in the ray parameter.
+ReliefRay reliefQuadricExact(ReliefRay ray, vec3 view, vec2 quadric, float depthScale,
+  float range)
+{
+  float sine = sqrt(max(1.0f - view.z * view.z, 0.0f));
+  ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  // both curvatures bending away, the lesser at least 1e-3 of the greater (a fitted
+  // cylinder's axis term is zero only up to rounding)
+  if (max(quadric.x, quadric.y) < 1e-3f * min(quadric.x, quadric.y) && sine > 1e-4f)
+  {
+    vec3 u = vec3(-view.x * view.z / sine, -view.y * view.z / sine, sine);
+    float a = quadric.x * u.x * u.x + quadric.y * u.y * u.y;
+    float b = 2.0f * range * (quadric.x * view.x * u.x + quadric.y * view.y * u.y);
+    ray.exact = vec4(b, -u.z, 4.0f * a * depthScale, 1.0f);
+  }
+  return ray;
+}
+
+#ifdef RELIEF_EXACT_DISTANCE
+// The ray's depth at t by Eq. 6 where its terms are set, from its vertical depth
+float reliefExactDepth(ReliefRay ray, float t, float verticalDepth)
+{
+  if (ray.exact.w < 0.5f)
+  {
+    return verticalDepth;
+  }
+  float b = ray.exact.x * t + ray.exact.y;
+  float discriminant = b * b - ray.exact.z * verticalDepth;
+  return discriminant >= 0.0f && b < 0.0f
+    ? 2.0f * verticalDepth / (sqrt(discriminant) - b)
+    : verticalDepth;
+}
+#endif
 
 // True when a ray that met nothing ended back on the quadric, not at depth 1: it left
 // the surface past the silhouette, and the fragment shows what lies behind.
