@@ -1,26 +1,32 @@
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
-#include "vtkLightCollection.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkSphereSource.h"
 #include "vtkCamera.h"
+#include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkReliefDisplacementFilter.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkRenderWindow.h"
+#include "vtkSequencePass.h"
+#include "vtkShadowMapBakerPass.h"
+#include "vtkShadowMapPass.h"
+#include "vtkSphereSource.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTexture.h"
+#include "vtkTextureMapToSphere.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cctype>
@@ -191,6 +197,82 @@ std::vector<unsigned char> Pixels(vtkRenderWindow* window)
   const auto* first = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
   return std::vector<unsigned char>(first, first + scalars->GetDataSize());
 }
+}
+
+namespace
+{
+// A sphere of stones, 48 facets around, four by two tiles.
+vtkSmartPointer<vtkPolyData> StoneSphere()
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(0.5);
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(24);
+  vtkNew<vtkTextureMapToSphere> texture;
+  texture->SetInputConnection(source->GetOutputPort());
+  texture->PreventSeamOff();
+  texture->Update();
+  auto sphere = vtkSmartPointer<vtkPolyData>::New();
+  sphere->DeepCopy(texture->GetOutput());
+  ReliefScene::TileTextureCoordinates(sphere, 4.0, 2.0);
+  return sphere;
+}
+
+// One half of the window: a floor, a spotlight from above, the sphere drawn by `mapper`,
+// rendered through the shadow-map passes.
+void ShowShadowHalf(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper, vtkPolyData* sphere,
+  double left)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.1, 0.12, 0.16);
+  renderer->SetViewport(left, 0.0, left + 0.5, 1.0);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetPosition(0.0, -0.3, 3.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->PositionalOn();
+  light->SetConeAngle(40.0);
+  renderer->AddLight(light);
+
+  vtkNew<vtkPlaneSource> floor;
+  floor->SetOrigin(-1.5, -1.5, -0.6);
+  floor->SetPoint1(1.5, -1.5, -0.6);
+  floor->SetPoint2(-1.5, 1.5, -0.6);
+  vtkNew<vtkPolyDataMapper> floorMapper;
+  floorMapper->SetInputConnection(floor->GetOutputPort());
+  vtkNew<vtkActor> floorActor;
+  floorActor->SetMapper(floorMapper);
+  renderer->AddActor(floorActor);
+
+  mapper->SetInputData(sphere);
+  mapper->SetHeightMapData(ReliefScene::ReadImage("stones_height.png"));
+  mapper->SetDepthScale(0.1);
+  mapper->SetLinearSteps(32);
+  mapper->SetBinarySteps(6);
+  vtkNew<vtkActor> sphereActor;
+  sphereActor->SetMapper(mapper);
+  sphereActor->GetProperty()->BackfaceCullingOn(); // closed: see past the silhouette
+  renderer->AddActor(sphereActor);
+
+  vtkNew<vtkShadowMapPass> shadows;
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(shadows->GetShadowMapBakerPass());
+  passes->AddItem(shadows);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  vtkNew<vtkCameraPass> cameraPass;
+  cameraPass->SetDelegatePass(sequence);
+  renderer->SetPass(cameraPass);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, -3.0, 2.5);
+  camera->SetFocalPoint(0.0, 0.0, -0.3);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  camera->Zoom(1.3);
+  window->AddRenderer(renderer);
+}
+
 }
 
 namespace ReliefScene
@@ -410,6 +492,15 @@ void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
     camera->SetViewAngle(20.0);
     renderer->ResetCameraClippingRange();
   }
+}
+
+void ShowQuadricShadows(vtkRenderWindow* window, int width, int height)
+{
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  auto sphere = StoneSphere();
+  ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLReliefMapper>::New(), sphere, 0.0);
+  ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New(), sphere, 0.5);
 }
 
 std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)

@@ -1,0 +1,62 @@
+// Shadows with other actors through VTK's shadow-map passes (seed 000 s3.5, Fig. 13):
+// the shadow map is baked with the relief mapper's own shader, so it holds the relief's
+// depth. A stone sphere over a plain floor under a spotlight, the flat frame (left) and
+// the quadric frame (right): the quadric sphere's shadow has the stones' outline, the
+// flat one the polygons' disc. Beside the baseline, the test checks that the quadric
+// shadow is the smaller (light passes between the stones at its rim) and that both
+// spheres do cast one.
+#include "ReliefScene.h"
+
+#include "vtkNew.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+
+#include <iostream>
+
+namespace
+{
+constexpr int Width = 800;
+constexpr int Height = 400;
+
+// Floor pixels in shadow in the half of the window starting at column `first`: darker
+// than a tenth of full grey and not the background.
+long ShadowPixels(const std::vector<unsigned char>& pixels, int first)
+{
+  long count = 0;
+  for (int row = 0; row < Height; ++row)
+  {
+    for (int column = first; column < first + Width / 2; ++column)
+    {
+      const unsigned char* rgb = &pixels[3 * (static_cast<size_t>(row) * Width + column)];
+      count += rgb[0] < 25 && rgb[1] < 25 && rgb[2] < 25 ? 1 : 0;
+    }
+  }
+  return count;
+}
+}
+
+int TestReliefQuadricShadows(int argc, char* argv[])
+{
+  vtkNew<vtkRenderWindow> window;
+  ReliefScene::ShowQuadricShadows(window, Width, Height);
+  window->Render();
+
+  const std::vector<unsigned char> pixels = ReliefScene::Pixels(window);
+  const long flatShadow = ShadowPixels(pixels, 0);
+  const long quadricShadow = ShadowPixels(pixels, Width / 2);
+  std::cout << "shadow pixels: flat frame " << flatShadow << ", quadric frame " << quadricShadow
+            << "\n";
+  int failures = 0;
+  if (!(flatShadow > 5000 && quadricShadow > 5000))
+  {
+    std::cerr << "ERROR: a relief sphere casts no shadow through the shadow-map passes\n";
+    ++failures;
+  }
+  if (!(quadricShadow < 0.95 * flatShadow))
+  {
+    std::cerr << "ERROR: the quadric frame's shadow is not carved by its relief\n";
+    ++failures;
+  }
+  const int image = vtkRegressionTestImage(window);
+  return failures == 0 && image == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+}
