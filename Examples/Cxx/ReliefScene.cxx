@@ -7,11 +7,13 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMath.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -26,7 +28,7 @@
 #include "vtkSphereSource.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTexture.h"
-#include "vtkTextureMapToSphere.h"
+#include "vtkTexturedSphereSource.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cctype>
@@ -99,12 +101,12 @@ vtkSmartPointer<vtkPolyData> Square(double tiles)
   return square;
 }
 
-vtkSmartPointer<vtkPolyData> Torus()
+vtkSmartPointer<vtkPolyData> Torus(int resolution)
 {
   vtkNew<vtkSuperquadricSource> source;
   source->ToroidalOn();
-  source->SetThetaResolution(48);
-  source->SetPhiResolution(24);
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution / 2);
   source->SetThickness(0.4);
   source->SetSize(0.5);
   source->Update();
@@ -112,6 +114,39 @@ vtkSmartPointer<vtkPolyData> Torus()
   torus->DeepCopy(source->GetOutput());
   TileTextureCoordinates(torus, 6.0, 2.0);
   return torus;
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(int resolution)
+{
+  vtkNew<vtkTexturedSphereSource> source;
+  source->SetRadius(0.5);
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution / 2);
+  source->Update();
+  auto sphere = vtkSmartPointer<vtkPolyData>::New();
+  sphere->DeepCopy(source->GetOutput());
+  TileTextureCoordinates(sphere, 4.0, 2.0);
+  return sphere;
+}
+
+vtkSmartPointer<vtkPolyData> Cylinder(int resolution, double sweep)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(std::max(1, static_cast<int>(std::lround(resolution * sweep / 360.0))),
+    resolution);
+  plane->Update();
+  auto cylinder = vtkSmartPointer<vtkPolyData>::New();
+  cylinder->DeepCopy(plane->GetOutput());
+  TileTextureCoordinates(cylinder, 4.0 * sweep / 360.0, 5.0);
+  vtkPoints* points = cylinder->GetPoints();
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    const double* flat = points->GetPoint(p); // in [-0.5, 0.5]^2
+    const double angle = vtkMath::RadiansFromDegrees(sweep) * (flat[0] + 0.5);
+    points->SetPoint(p, 0.4 * std::cos(angle), 0.4 * std::sin(angle), 3.0 * flat[1]);
+  }
+  cylinder->GetPointData()->SetNormals(nullptr); // the plane's: recomputed where needed
+  return cylinder;
 }
 
 vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
@@ -201,23 +236,6 @@ std::vector<unsigned char> Pixels(vtkRenderWindow* window)
 
 namespace
 {
-// A sphere of stones, 48 facets around, four by two tiles.
-vtkSmartPointer<vtkPolyData> StoneSphere()
-{
-  vtkNew<vtkSphereSource> source;
-  source->SetRadius(0.5);
-  source->SetThetaResolution(48);
-  source->SetPhiResolution(24);
-  vtkNew<vtkTextureMapToSphere> texture;
-  texture->SetInputConnection(source->GetOutputPort());
-  texture->PreventSeamOff();
-  texture->Update();
-  auto sphere = vtkSmartPointer<vtkPolyData>::New();
-  sphere->DeepCopy(texture->GetOutput());
-  ReliefScene::TileTextureCoordinates(sphere, 4.0, 2.0);
-  return sphere;
-}
-
 // One half of the window: a floor, a spotlight from above, the sphere drawn by `mapper`,
 // rendered through the shadow-map passes.
 void ShowShadowHalf(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper, vtkPolyData* sphere,
@@ -382,7 +400,7 @@ void ShowSearchMethods(vtkRenderWindow* window, int width, int height)
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowTorus(vtkRenderWindow* window, int width, int height)
 {
   auto renderer = LitRenderer(window, width, height);
-  auto mapper = ReliefMapper(Torus(), "stones_height.png", 0.03);
+  auto mapper = ReliefMapper(Torus(48), "stones_height.png", 0.03);
   renderer->AddActor(ReliefActor(mapper, "stones_color.png"));
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, -1.0, 0.8);
@@ -460,7 +478,7 @@ void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height)
 
 void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
 {
-  auto torus = Torus();
+  auto torus = Torus(48);
   for (bool quadric : { false, true })
   {
     auto renderer = LitRenderer(window, width, height);
@@ -498,7 +516,7 @@ void ShowQuadricShadows(vtkRenderWindow* window, int width, int height)
 {
   window->SetSize(width, height);
   window->SetMultiSamples(0);
-  auto sphere = StoneSphere();
+  auto sphere = Sphere(48);
   ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLReliefMapper>::New(), sphere, 0.0);
   ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New(), sphere, 0.5);
 }

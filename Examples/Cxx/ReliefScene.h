@@ -40,8 +40,17 @@ void TileTextureCoordinates(vtkPolyData* surface, double uTiles, double vTiles);
 /// A unit square in the xy plane with texture coordinates [0, tiles]^2 and +z normals.
 vtkSmartPointer<vtkPolyData> Square(double tiles = 1.0);
 
-/// A torus (toroidal superquadric) with texture coordinates tiled for square texels.
-vtkSmartPointer<vtkPolyData> Torus();
+/// A torus (toroidal superquadric, size 0.5, thickness 0.4, axis y), `resolution`
+/// facets around its ring, texture coordinates tiled 6 x 2 for square texels.
+vtkSmartPointer<vtkPolyData> Torus(int resolution);
+
+/// A sphere of radius 0.5, `resolution` facets around, texture tiled 4 x 2.
+vtkSmartPointer<vtkPolyData> Sphere(int resolution);
+
+/// A cylinder of radius 0.4 around z, 3 high, `resolution` facets around a full turn,
+/// the part `sweep` degrees around (less than 360: an open mesh with boundaries on
+/// every side), texture tiled 4 x 5 over a full turn; no normals.
+vtkSmartPointer<vtkPolyData> Cylinder(int resolution, double sweep = 360.0);
 
 /// A relief mapper on `surface` with `heightMap` of Data/ and a depth scale.
 vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(

@@ -13,17 +13,12 @@
 #include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
-#include "vtkPlaneSource.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSuperquadricSource.h"
-#include "vtkTexturedSphereSource.h"
 
 #include <cmath>
 #include <functional>
@@ -33,57 +28,6 @@
 namespace
 {
 constexpr double DepthScale = 0.05;
-constexpr double Pi = 3.14159265358979323846;
-
-vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* source, double uTiles, double vTiles)
-{
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(source);
-  ReliefScene::TileTextureCoordinates(copy, uTiles, vTiles);
-  return copy;
-}
-
-vtkSmartPointer<vtkPolyData> Sphere(int resolution)
-{
-  vtkNew<vtkTexturedSphereSource> source;
-  source->SetRadius(0.5);
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution / 2);
-  source->Update();
-  return Copy(source->GetOutput(), 4.0, 2.0);
-}
-
-// A cylinder of radius 0.4 around z, 3 high: a plane rolled up. The views frame its
-// middle, so its outline is the curved sides, not the open rims (seed 000 has no answer
-// for a mesh's boundary: rays there see the relief end where the mesh ends).
-vtkSmartPointer<vtkPolyData> Cylinder(int resolution)
-{
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetResolution(resolution, resolution);
-  plane->Update();
-  auto cylinder = Copy(plane->GetOutput(), 4.0, 5.0);
-  vtkPoints* points = cylinder->GetPoints();
-  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
-  {
-    const double* flat = points->GetPoint(p); // in [-0.5, 0.5]^2
-    const double angle = 2.0 * Pi * (flat[0] + 0.5);
-    points->SetPoint(p, 0.4 * std::cos(angle), 0.4 * std::sin(angle), 3.0 * flat[1]);
-  }
-  cylinder->GetPointData()->SetNormals(nullptr); // the plane's: recomputed
-  return cylinder;
-}
-
-vtkSmartPointer<vtkPolyData> Torus(int resolution)
-{
-  vtkNew<vtkSuperquadricSource> source;
-  source->ToroidalOn();
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution / 2);
-  source->SetThickness(0.4);
-  source->SetSize(0.5);
-  source->Update();
-  return Copy(source->GetOutput(), 6.0, 2.0);
-}
 
 vtkSmartPointer<vtkActor> ActorOf(vtkMapper* mapper)
 {
@@ -107,13 +51,16 @@ int TestReliefQuadricAccuracy(int, char*[])
   const struct
   {
     const char* Name;
-    std::function<vtkSmartPointer<vtkPolyData>(int)> Make;
+    std::function<vtkSmartPointer<vtkPolyData>(int)> Make; // the shape at a resolution
     int Coarse; // facets around: the polygons' sag below the surface stays under a fifth
                 // of DepthScale, outside which the relief cannot draw
     double Frame[6]; // what the views frame
-  } shapes[] = { { "sphere", Sphere, 48, { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 } },
-    { "cylinder", Cylinder, 48, { -0.4, 0.4, -0.4, 0.4, -0.5, 0.5 } },
-    { "torus", Torus, 48, { -0.5, 0.5, -0.15, 0.15, -0.5, 0.5 } } };
+  } shapes[] = { { "sphere", ReliefScene::Sphere, 48, { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 } },
+    // the middle of a long cylinder: its outline is the curved sides, not the open rims
+    // (seed 000 has no answer at a mesh's boundary, where the relief ends with the mesh)
+    { "cylinder", [](int resolution) { return ReliefScene::Cylinder(resolution); }, 48,
+      { -0.4, 0.4, -0.4, 0.4, -0.5, 0.5 } },
+    { "torus", ReliefScene::Torus, 48, { -0.5, 0.5, -0.15, 0.15, -0.5, 0.5 } } };
   const double views[][2] = { { 0.0, 10.0 }, { 35.0, 30.0 }, { 70.0, -20.0 } }; // azimuth, elevation
 
   vtkNew<vtkRenderWindow> window;

@@ -20,8 +20,6 @@
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSphereSource.h"
-#include "vtkTextureMapToSphere.h"
 
 #include <cmath>
 #include <iostream>
@@ -29,23 +27,6 @@
 
 namespace
 {
-// A coarse sphere (24 x 12 facets) with four by two tiles of texture around it.
-vtkSmartPointer<vtkPolyData> Sphere()
-{
-  vtkNew<vtkSphereSource> source;
-  source->SetRadius(0.5);
-  source->SetThetaResolution(24);
-  source->SetPhiResolution(12);
-  vtkNew<vtkTextureMapToSphere> texture;
-  texture->SetInputConnection(source->GetOutputPort());
-  texture->PreventSeamOff();
-  texture->Update();
-  auto sphere = vtkSmartPointer<vtkPolyData>::New();
-  sphere->DeepCopy(texture->GetOutput());
-  ReliefScene::TileTextureCoordinates(sphere, 4.0, 2.0);
-  return sphere;
-}
-
 // The mapper of a shape in its own viewport, seen from the side, lit from the upper left.
 template <typename Mapper>
 vtkSmartPointer<Mapper> Show(vtkRenderWindow* window, vtkPolyData* shape, double left, double right)
@@ -111,8 +92,8 @@ int TestReliefQuadricSilhouette(int argc, char* argv[])
   };
 
   // the outline moves: the flat frame covers pixels the quadric frame carves away
-  auto sphere = Sphere();
-  auto torus = ReliefScene::Torus();
+  auto sphere = ReliefScene::Sphere(24);
+  auto torus = ReliefScene::Torus(48);
   {
     vtkNew<vtkRenderWindow> flatWindow;
     flatWindow->SetOffScreenRendering(1);
