@@ -10,6 +10,7 @@
 // (seed 002's Table 1), the acceleration filters' run times, and every method's speed
 // against its accuracy (ReliefAccuracy.h).
 #include "ReliefAccuracy.h"
+#include "ReliefQuadricStudy.h"
 #include "ReliefScene.h"
 #include "ReliefSweeps.h"
 
@@ -82,7 +83,7 @@ bool KnownSections(const std::string& list)
   while (std::getline(sections, section, ','))
   {
     if (section != "plain" && section != "methods" && section != "filters" &&
-      section != "accuracy" && section != "sweeps")
+      section != "accuracy" && section != "sweeps" && section != "quadric")
     {
       return false;
     }
@@ -312,14 +313,15 @@ int main(int argc, char* argv[])
       }
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
-                   "                      filters, accuracy, sweeps)\n"
+                   "                      filters, accuracy, sweeps, quadric)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
                    "method at three height-map sizes, every method's speed against its\n"
                    "accuracy, and its error as view angle, feature width, curvature and\n"
-                   "depth scale sweep. --report writes the timing tables, --results the\n"
-                   "accuracy study and sweeps with their charts (PNG, in images/ beside\n"
+                   "depth scale sweep, and the quadric frame's silhouettes on curved shapes.\n"
+                   "--report writes the timing tables, --results the accuracy study, the\n"
+                   "sweeps and the quadric study with their charts (PNG, in images/ beside\n"
                    "FILE.md), each with machine and versions. --quick: small sizes and few\n"
                    "frames, a smoke run.\n";
       return std::strcmp(argv[i], "--help") ? 2 : 0;
@@ -329,7 +331,7 @@ int main(int argc, char* argv[])
   if (!only.empty() && !report.empty())
   {
     std::cerr << "relief bench: --report writes every timing table; run it without --only "
-                 "(--results may go with --only accuracy,sweeps).\n";
+                 "(--results may go with --only accuracy,sweeps,quadric).\n";
     return 2;
   }
   if (quick)
@@ -442,6 +444,19 @@ int main(int argc, char* argv[])
   sweeps.ImageDirectory = accuracy.ImageDirectory;
   const std::string sweepsSection =
     wanted("sweeps") ? ReliefSweeps::Run(sweeps) : "(not run)\n";
+  ReliefQuadricStudy::Options quadric;
+  quadric.Frames = std::max(1, frames / 2);
+  quadric.Rounds = quick ? 1 : 2;
+  if (quick)
+  {
+    quadric.Width = 150;
+    quadric.Height = 150;
+    quadric.HeightMapSize = 32;
+  }
+  quadric.ImageDirectory = accuracy.ImageDirectory;
+  const std::string quadricSection = wanted("quadric")
+    ? ReliefQuadricStudy::Report(ReliefQuadricStudy::Measure(quadric), quadric)
+    : "(not run)\n";
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -514,7 +529,7 @@ int main(int argc, char* argv[])
     std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads.\n\n";
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
-            << sweepsSection;
+            << sweepsSection << "\n" << quadricSection;
 
   if (!report.empty())
   {
@@ -532,7 +547,8 @@ int main(int argc, char* argv[])
     out << "# Results: speed against accuracy\n\n"
         << "Produced by `./relief bench --results " << results << "`.\n\n"
         << machine.str() << "\n" << accuracySection
-        << "\n## Stability: where each method fails\n\n" << sweepsSection;
+        << "\n## Stability: where each method fails\n\n" << sweepsSection
+        << "\n## Curved surfaces: the quadric frame's silhouettes\n\n" << quadricSection;
     std::cout << "written to " << results << "\n";
   }
   return 0;

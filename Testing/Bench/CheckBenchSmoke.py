@@ -1,7 +1,8 @@
-"""Runs ReliefBench --quick on the accuracy study (one search method) and the stability
-sweeps, and checks what it writes: the results table (every expected row, every figure a
-finite number, the truth error-free, the exact search closer to the truth than the dense
-mesh and the mesh than the bare polygons), a table per sweep, and every chart."""
+"""Runs ReliefBench --quick on the accuracy study (one search method), the stability
+sweeps and the quadric study, and checks what it writes: the results table (every
+expected row, every figure a finite number, the truth error-free, the exact search closer
+to the truth than the dense mesh and the mesh than the bare polygons), a table per sweep,
+the quadric study's rows, and every chart."""
 import argparse
 import math
 import os
@@ -13,7 +14,9 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 EXPECTED_ROWS = ["ConeStep", "dense mesh", "coarse polygons", "ground truth"]
 FIGURE_COLUMNS = range(2, 13)  # wrong pixels .. GPU MB
 CHARTS = ["accuracy_time.png", "accuracy_samples.png", "sweep_angle.png", "sweep_width.png",
-          "sweep_curvature.png", "sweep_saddle.png", "sweep_crease.png", "sweep_depth.png"]
+          "sweep_curvature.png", "sweep_saddle.png", "sweep_crease.png", "sweep_depth.png",
+          "quadric_silhouette_error.png"]
+QUADRIC_FRAMES = ["flat", "quadric, approximate distance", "quadric, exact distance"]
 SWEEPS = ["view angle", "wall width", "sphere radius", "k of the saddle", "crease angle",
           "DepthScale"]
 
@@ -61,6 +64,20 @@ def check_sweep(text, parameter):
         fail("the sweep over %s has %d values" % (parameter, rows))
 
 
+def check_quadric(text):
+    """The quadric study: a row per shape, view and frame, each figure finite."""
+    if "## Curved surfaces" not in text:
+        fail("no quadric study in the results")
+    rows = [line.split("|")[1:-1] for line in text.splitlines()
+            if line.startswith("| ") and line.count("|") == 8
+            and line.split("|")[3].strip() in QUADRIC_FRAMES]
+    if len(rows) != 3 * 3 * len(QUADRIC_FRAMES):
+        fail("the quadric study has %d rows, not 27" % len(rows))
+    for cells in rows:
+        for cell in cells[3:]:
+            figure(cell)
+
+
 def check_chart(path):
     if not os.path.isfile(path):
         fail("no chart at " + path)
@@ -87,7 +104,8 @@ def main():
     for stale in [results] + [os.path.join(arguments.output, "images", c) for c in CHARTS]:
         if os.path.exists(stale):
             os.remove(stale)
-    command = [arguments.bench, "--data", arguments.data, "--quick", "--only", "accuracy,sweeps",
+    command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
+               "accuracy,sweeps,quadric",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -113,6 +131,7 @@ def main():
              "equal detail, and the mesh the bare polygons: %s" % wrong)
     for sweep in SWEEPS:
         check_sweep(text, sweep)
+    check_quadric(text)
     for chart in CHARTS:
         check_chart(os.path.join(arguments.output, "images", chart))
     print("bench smoke run: results and charts well formed")

@@ -1,0 +1,49 @@
+// The quadric frame against the flat one (seed 000), and its two distance modes against
+// each other: stones on a sphere, a cylinder and a torus, three views each, every frame
+// rendered beside the ground truth (the same relief as real geometry on the finely
+// regenerated shape) and measured: silhouette error, wrong pixels, height samples per
+// pixel and ms/frame. The accuracy regression test asserts on the measurements; the
+// bench reports them with a chart.
+#ifndef ReliefQuadricStudy_h
+#define ReliefQuadricStudy_h
+
+#include <string>
+#include <vector>
+
+namespace ReliefQuadricStudy
+{
+struct Options
+{
+  int Width = 300; ///< window size
+  int Height = 300;
+  int HeightMapSize = 64;     ///< the stones height map resampled to this square size
+  double DepthScale = 0.05;
+  int Frames = 0;             ///< timed frames per frame, view and round; 0: not timed
+  int Rounds = 2;             ///< interleaved timing rounds
+  std::string ImageDirectory; ///< where the chart goes (PNG); none when empty
+};
+
+/// One frame (flat, quadric with either distance) on one shape seen from one view.
+struct Measurement
+{
+  std::string Shape;
+  double Azimuth = 0.0;
+  double Elevation = 0.0;
+  std::string Frame;
+  double SilhouetteError = 0.0; ///< coverage mismatch over the bare polygons' (0 perfect)
+  double WrongPixels = 0.0;     ///< as ReliefMetrics::WrongPixelFraction
+  double MeanSamples = 0.0;     ///< height samples per covered pixel
+  double Milliseconds = 0.0;    ///< median frame time; 0 when not timed
+};
+
+/// The frames' names, in the order each view lists them.
+const std::vector<std::string>& Frames();
+
+/// Renders and measures every shape, view and frame.
+std::vector<Measurement> Measure(const Options& options);
+
+/// The Markdown section of the bench: context, table, summary and chart.
+std::string Report(const std::vector<Measurement>& measurements, const Options& options);
+}
+
+#endif
