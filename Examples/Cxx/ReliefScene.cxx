@@ -244,13 +244,7 @@ void ShowShadowHalf(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper, vtkP
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.12, 0.16);
   renderer->SetViewport(left, 0.0, left + 0.5, 1.0);
-  renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetPosition(0.0, -0.3, 3.0);
-  light->SetFocalPoint(0.0, 0.0, 0.0);
-  light->PositionalOn();
-  light->SetConeAngle(40.0);
-  renderer->AddLight(light);
+  ReliefScene::AddSpotlight(renderer);
 
   vtkNew<vtkPlaneSource> floor;
   floor->SetOrigin(-1.5, -1.5, -0.6);
@@ -272,15 +266,7 @@ void ShowShadowHalf(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper, vtkP
   sphereActor->GetProperty()->BackfaceCullingOn(); // closed: see past the silhouette
   renderer->AddActor(sphereActor);
 
-  vtkNew<vtkShadowMapPass> shadows;
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(shadows->GetShadowMapBakerPass());
-  passes->AddItem(shadows);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-  vtkNew<vtkCameraPass> cameraPass;
-  cameraPass->SetDelegatePass(sequence);
-  renderer->SetPass(cameraPass);
+  ReliefScene::UseShadowMaps(renderer);
 
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, -3.0, 2.5);
@@ -510,6 +496,30 @@ void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
     camera->SetViewAngle(20.0);
     renderer->ResetCameraClippingRange();
   }
+}
+
+void AddSpotlight(vtkRenderer* renderer)
+{
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetPosition(0.0, -0.3, 3.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->PositionalOn();
+  light->SetConeAngle(40.0);
+  renderer->AddLight(light);
+}
+
+void UseShadowMaps(vtkRenderer* renderer)
+{
+  vtkNew<vtkShadowMapPass> shadows;
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(shadows->GetShadowMapBakerPass());
+  passes->AddItem(shadows);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  vtkNew<vtkCameraPass> cameraPass;
+  cameraPass->SetDelegatePass(sequence);
+  renderer->SetPass(cameraPass);
 }
 
 void ShowQuadricShadows(vtkRenderWindow* window, int width, int height)

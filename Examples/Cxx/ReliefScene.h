@@ -107,6 +107,10 @@ void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height);
 /// Stones on a coarse torus, close on its outline: the flat frame (left) keeps the
 /// polygons' silhouette, the quadric frame (right) lets the relief carve it.
 void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height);
+/// A spotlight 3 above the origin, pointing down, as the only light of `renderer`.
+void AddSpotlight(vtkRenderer* renderer);
+/// Renders `renderer` through VTK's shadow-map passes (baker, then shadows).
+void UseShadowMaps(vtkRenderer* renderer);
 /// A stone sphere over a plain floor under a spotlight, through VTK's shadow-map passes:
 /// the flat frame (left) casts the polygons' disc, the quadric frame (right) the stones'.
 void ShowQuadricShadows(vtkRenderWindow* window, int width, int height);

@@ -4,10 +4,18 @@
 // the quadric frame (right): the quadric sphere's shadow has the stones' outline, the
 // flat one the polygons' disc. Beside the baseline, the test checks that the quadric
 // shadow is the smaller (light passes between the stones at its rim) and that both
-// spheres do cast one.
+// spheres do cast one; and that relief receives shadows: a plain sphere over a floor of
+// rivets darkens the floor only when the shadow passes run.
 #include "ReliefScene.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkNew.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 
@@ -33,6 +41,46 @@ long ShadowPixels(const std::vector<unsigned char>& pixels, int first)
   }
   return count;
 }
+
+// Pixels of a relief floor under a plain sphere that the sphere's shadow darkens: lit
+// without the shadow-map passes, less than half as bright with them.
+long ReceivedShadowPixels()
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(300, 300);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  ReliefScene::AddSpotlight(renderer);
+  auto floor = ReliefScene::Square(2.0);
+  auto floorMapper = ReliefScene::ReliefMapper(floor, "rivets_height.png", 0.05);
+  renderer->AddActor(ReliefScene::ReliefActor(floorMapper, ""));
+  vtkNew<vtkSphereSource> ball;
+  ball->SetCenter(0.0, 0.0, 0.3);
+  ball->SetRadius(0.15);
+  vtkNew<vtkPolyDataMapper> ballMapper;
+  ballMapper->SetInputConnection(ball->GetOutputPort());
+  vtkNew<vtkActor> ballActor;
+  ballActor->SetMapper(ballMapper);
+  renderer->AddActor(ballActor);
+  renderer->GetActiveCamera()->SetPosition(0.0, -1.5, 2.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+
+  window->Render();
+  const std::vector<unsigned char> unshadowed = ReliefScene::Pixels(window);
+  ReliefScene::UseShadowMaps(renderer);
+  window->Render();
+  const std::vector<unsigned char> shadowed = ReliefScene::Pixels(window);
+  long count = 0;
+  for (size_t k = 0; k + 2 < shadowed.size(); k += 3)
+  {
+    const int before = unshadowed[k] + unshadowed[k + 1] + unshadowed[k + 2];
+    const int after = shadowed[k] + shadowed[k + 1] + shadowed[k + 2];
+    count += before > 150 && after < before / 2 ? 1 : 0;
+  }
+  return count;
+}
 }
 
 int TestReliefQuadricShadows(int argc, char* argv[])
@@ -55,6 +103,13 @@ int TestReliefQuadricShadows(int argc, char* argv[])
   if (!(quadricShadow < 0.95 * flatShadow))
   {
     std::cerr << "ERROR: the quadric frame's shadow is not carved by its relief\n";
+    ++failures;
+  }
+  const long received = ReceivedShadowPixels();
+  std::cout << "relief floor pixels darkened by a plain sphere's shadow: " << received << "\n";
+  if (!(received > 1000))
+  {
+    std::cerr << "ERROR: relief receives no shadow through the shadow-map passes\n";
     ++failures;
   }
   const int image = vtkRegressionTestImage(window);
