@@ -1,5 +1,6 @@
 #include "vtkOpenGLQuadricReliefMapper.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
 #include "vtkLocalQuadricFilter.h"
 #include "vtkObjectFactory.h"
@@ -32,25 +33,25 @@ vtkLocalQuadricFilter* vtkOpenGLQuadricReliefMapper::GetLocalQuadricFilter()
 
 bool vtkOpenGLQuadricReliefMapper::HasUsableQuadrics(vtkPolyData* mesh)
 {
-  vtkDataArray* quadrics =
-    mesh->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName());
-  if (!quadrics)
+  vtkAbstractArray* array =
+    mesh->GetPointData()->GetAbstractArray(vtkLocalQuadricFilter::QuadricArrayName());
+  if (!array)
   {
     return false;
   }
-  if (quadrics->GetNumberOfComponents() == 2 &&
-    quadrics->GetNumberOfTuples() == mesh->GetNumberOfPoints())
+  if (vtkDataArray::SafeDownCast(array) && array->GetNumberOfComponents() == 2 &&
+    array->GetNumberOfTuples() == mesh->GetNumberOfPoints())
   {
     return true;
   }
   if (this->WarnedQuadricsTime != mesh->GetMTime())
   {
     this->WarnedQuadricsTime = mesh->GetMTime();
-    vtkWarningMacro("The mesh's \"" << vtkLocalQuadricFilter::QuadricArrayName() << "\" array has "
-                    << quadrics->GetNumberOfComponents() << " component(s) and "
-                    << quadrics->GetNumberOfTuples() << " tuple(s), not 2 and one a point ("
-                    << mesh->GetNumberOfPoints()
-                    << "): computing the quadrics instead. Remove it, or give "
+    vtkWarningMacro("The mesh's \"" << vtkLocalQuadricFilter::QuadricArrayName() << "\" array is a "
+                    << array->GetClassName() << " of " << array->GetNumberOfComponents()
+                    << " component(s) and " << array->GetNumberOfTuples()
+                    << " tuple(s), not 2 numbers for each of its " << mesh->GetNumberOfPoints()
+                    << " points: computing the quadrics instead. Remove it, or give "
                        "vtkLocalQuadricFilter's output.");
   }
   return false;

@@ -2,8 +2,8 @@
 // outlines (seed 000 Fig. 9 and 15), where the flat frame keeps the polygons'. The
 // baseline shows both shapes; beside it the test checks that the outline really moves
 // (pixels the flat frame covers are uncovered), that NaN quadrics draw as the flat
-// frame does, that a quadric array of the wrong size is recomputed with one warning,
-// and that a grid search falls back to LinearBinary with one warning.
+// frame does, that a quadric array of the wrong size or type is recomputed with one
+// warning, and that a grid search falls back to LinearBinary with one warning.
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 
@@ -20,6 +20,7 @@
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkStringArray.h"
 
 #include <cmath>
 #include <iostream>
@@ -154,6 +155,19 @@ int TestReliefQuadricSilhouette(int argc, char* argv[])
   check(messages->Count(vtkCommand::WarningEvent) == 1 &&
       messages->AnyMessageContains(vtkLocalQuadricFilter::QuadricArrayName()),
     "a quadric array of the wrong size: one warning");
+  // an array of the right name but no numbers: the same
+  vtkNew<vtkStringArray> words;
+  words->SetName(vtkLocalQuadricFilter::QuadricArrayName());
+  words->SetNumberOfValues(badSphere->GetNumberOfPoints());
+  badSphere->GetPointData()->RemoveArray(vtkLocalQuadricFilter::QuadricArrayName());
+  badSphere->GetPointData()->AddArray(words);
+  badSphere->Modified();
+  messages->Clear();
+  window->Render();
+  window->Render();
+  check(messages->Count(vtkCommand::WarningEvent) == 1 &&
+      messages->AnyMessageContains("vtkStringArray"),
+    "a quadric array of strings: one warning");
   messages->Clear();
   sphereMapper->SetSearchMethodToConeStep();
   window->Render();

@@ -143,7 +143,8 @@ int TestReliefTextureFormats(int, char*[])
   // differences of the bilinear depth, normalized after blending. They differ by a tenth
   // of a level on average here and by 8 levels at most, where the bumps turn fastest;
   // anything but the same normals differs by tens of levels (below).
-  check(alike.Mean < 0.5 && alike.Largest <= 16, "a normal map of the computed normals looks alike");
+  check(alike.Mean < 0.5 && alike.Largest <= 16,
+    "a normal map of the computed normals looks alike");
 
   // every normal tilted 37 degrees toward +x: the lighting follows the map
   auto* texels = static_cast<float*>(normalMap->GetScalarPointer());
