@@ -16,9 +16,10 @@
 // The exact distance (Eq. 5-6, compiled with RELIEF_EXACT_DISTANCE) measures from P
 // along U, the unit vector perpendicular to V in the plane of V and the normal, to the
 // quadric: s solves a (P.x + U.x s)^2 + b (P.y + U.y s)^2 = P.z + U.z s. Seed 000 uses
-// it where both principal curvatures bend away from the viewer (here a, b < 0)
-// and Eq. 7 where the Gaussian curvature is negative or zero (saddles, cylinders,
-// planes, bowls), as it does when V is the normal (U undefined).
+// it where both principal curvatures bend away from the viewer (here a, b < 0), and
+// Eq. 7 elsewhere: where both bend toward the viewer (bowls), where the Gaussian
+// curvature is negative or zero (saddles, cylinders, planes), and when V is the normal
+// (U undefined).
 
 // The quadric's depth terms (A, B) of the view direction `view` in the tangent frame;
 // a grazing ray's descent is held at 1e-3 of its run, as reliefViewRay() does.
