@@ -3,7 +3,8 @@
 // baseline shows both shapes; beside it the test checks that the outline really moves
 // (pixels the flat frame covers are uncovered), that NaN quadrics draw as the flat
 // frame does, that a quadric array of the wrong size or type is recomputed with one
-// warning, and that a grid search falls back to LinearBinary with one warning.
+// warning, that a grid search falls back to LinearBinary with one warning, and that a
+// mesh without texture coordinates gives one error and draws plainly.
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 
@@ -178,6 +179,25 @@ int TestReliefQuadricSilhouette(int argc, char* argv[])
     "a grid search falls back to LinearBinary");
   sphereMapper->SetSearchMethodToLinearBinary();
   window->Render();
+
+  // a mesh without texture coordinates: one error naming them, and it draws plainly
+  {
+    auto bare = vtkSmartPointer<vtkPolyData>::New();
+    bare->DeepCopy(sphere);
+    bare->GetPointData()->SetTCoords(nullptr);
+    vtkNew<vtkRenderWindow> bareWindow;
+    bareWindow->SetOffScreenRendering(1);
+    auto bareMapper = Show<vtkOpenGLQuadricReliefMapper>(bareWindow, bare, 0.0, 1.0);
+    vtkNew<ReliefEventRecorder> errors;
+    bareMapper->AddObserver(vtkCommand::ErrorEvent, errors);
+    bareMapper->AddObserver(vtkCommand::WarningEvent, errors);
+    const long background = BackgroundPixels(bareWindow);
+    bareWindow->Render();
+    check(errors->Count(vtkCommand::ErrorEvent) == 1 &&
+        errors->AnyMessageContains("texture coordinates"),
+      "a mesh without texture coordinates: one error");
+    check(background < 300L * 600L - 2000L, "a mesh without texture coordinates draws plainly");
+  }
 
   const int image = vtkRegressionTestImage(window);
   return failures == 0 && image == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
