@@ -14,12 +14,14 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
+#include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -66,6 +68,7 @@ struct Options
   int BinarySteps = 5;
   double SafetyTolerance = 0.0;
   bool Shadows = true;
+  bool Quadric = false; // the curved frame: the relief carves the silhouette
   double Azimuth = 0.0;
   double Elevation = 0.0;
   double Zoom = 1.0;
@@ -113,6 +116,8 @@ void PrintUsage(std::ostream& os)
         "  --safety-tolerance E depth the safety-radius search may pass below the\n"
         "                       surface unnoticed, 0 or more (default: 0, exact)\n"
         "  --no-shadows         turn self-shadowing off\n"
+        "  --quadric            curved relief (vtkOpenGLQuadricReliefMapper): the relief\n"
+        "                       carves the outline of a curved mesh; back faces culled\n"
         "  --azimuth A          degrees around the view up, from the reset camera (default: "
      << defaults.Azimuth
      << ")\n"
@@ -233,6 +238,7 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
   const std::map<std::string, std::function<void()>> flags = {
     { "--depth-convention", [&options]() { options.DepthConvention = true; } },
     { "--no-shadows", [&options]() { options.Shadows = false; } },
+    { "--quadric", [&options]() { options.Quadric = true; } },
     { "--sample-count", [&options]() { options.SampleCount = true; } },
   };
 
@@ -578,7 +584,15 @@ int main(int argc, char* argv[])
     ReliefScene::TileTextureCoordinates(mesh, options.Tiles[0], options.Tiles[1]);
   }
 
-  vtkNew<vtkOpenGLReliefMapper> mapper;
+  vtkSmartPointer<vtkOpenGLReliefMapper> mapper;
+  if (options.Quadric)
+  {
+    mapper = vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New();
+  }
+  else
+  {
+    mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+  }
   mapper->SetInputData(mesh);
   mapper->SetHeightMapData(heightMap);
   mapper->SetDepthScale(options.DepthScale.value_or(DefaultDepthFraction * mesh->GetLength()));
@@ -601,6 +615,8 @@ int main(int argc, char* argv[])
   {
     actor->SetTexture(ColorTexture(colorImage));
   }
+  // past a carved outline lies what is behind the mesh, not the relief of its far side
+  actor->GetProperty()->SetBackfaceCulling(options.Quadric);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
