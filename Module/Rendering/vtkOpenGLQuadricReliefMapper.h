@@ -25,7 +25,15 @@
  * straight line in texture space, assuming depth linear along it; below a quadric it
  * is not, so they are not offered: they fall back to LinearBinary with one warning.
  * Self-shadowing follows the light from the hit in the tangent plane of the fragment
- * (flat), an approximation on curved surfaces.
+ * (flat), an approximation on curved surfaces. Shadows with other actors come through
+ * VTK's shadow-map passes (vtkShadowMapBakerPass, vtkShadowMapPass): the baker runs
+ * this mapper's shader, so the shadow map holds the carved outline (s3.5).
+ *
+ * Give closed shapes BackfaceCullingOn() on the actor's property: past a carved
+ * outline the ray must show what lies behind the shape, not the relief on the inside
+ * of its far side. The polygons must enclose the relief: where the facets sag below
+ * the true surface by a good part of DepthScale, the relief's outermost points cannot
+ * be drawn.
  */
 #ifndef vtkOpenGLQuadricReliefMapper_h
 #define vtkOpenGLQuadricReliefMapper_h
