@@ -74,36 +74,11 @@ vtkIdType MipmappedBytes(int width, int height, int texelBytes)
   return bytes * texelBytes;
 }
 
-// A repeating, trilinearly filtered 2D texture of `values` (one or two components) in
-// `internalFormat`.
-bool UploadMipmappedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
-  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat)
-{
-  const int components = values->GetNumberOfComponents();
-  texture->SetContext(window);
-  // vtkTextureObject keeps the formats and data type of an earlier upload
-  texture->ResetFormatAndType();
-  texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(components == 1 ? GL_RED : GL_RG);
-  texture->SetWrapS(vtkTextureObject::Repeat);
-  texture->SetWrapT(vtkTextureObject::Repeat);
-  texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
-        values->GetDataType(), values->GetVoidPointer(0)))
-  {
-    return false;
-  }
-  // vtkTextureObject makes mipmaps for cube maps only
-  texture->Activate();
-  glGenerateMipmap(GL_TEXTURE_2D);
-  texture->Deactivate();
-  return true;
-}
-
-// A texture the searches read texel by texel (nearest filtering), one or two components.
-bool UploadFetchedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
-  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat)
+// A repeating 2D texture of `values` (one or two components) in `internalFormat`:
+// mipmapped and trilinearly filtered, or read texel by texel (nearest filtering: the
+// acceleration images, one texel per cell, repeating as the height map does).
+bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
+  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat, bool mipmapped)
 {
   const int components = values->GetNumberOfComponents();
   texture->SetContext(window);
@@ -112,13 +87,24 @@ bool UploadFetchedTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* wind
   texture->ResetFormatAndType();
   texture->SetInternalFormat(internalFormat);
   texture->SetFormat(components == 1 ? GL_RED : GL_RG);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  // one texel per cell, repeating as the height map does (texelFetch ignores it)
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
-  return texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
-    values->GetDataType(), values->GetVoidPointer(0));
+  texture->SetMinificationFilter(
+    mipmapped ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(mipmapped ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
+        values->GetDataType(), values->GetVoidPointer(0)))
+  {
+    return false;
+  }
+  if (mipmapped)
+  {
+    // vtkTextureObject makes mipmaps for cube maps only
+    texture->Activate();
+    glGenerateMipmap(GL_TEXTURE_2D);
+    texture->Deactivate();
+  }
+  return true;
 }
 
 // The two bytes a cell of vtkConeStepMapFilter's map is uploaded as.
@@ -450,7 +436,7 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     depths->SetValue(texel, static_cast<unsigned short>(std::lround(
       texels->GetComponent(texel, 3) * vtkReliefTextureFilter::DEPTH_LEVELS)));
   }
-  bool uploaded = UploadMipmappedTexture(this->DepthTexture, window, dimensions, depths, GL_R16);
+  bool uploaded = UploadTexture(this->DepthTexture, window, dimensions, depths, GL_R16, true);
   this->DepthTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 2);
   const bool inputNormals = this->ReliefTextureFilter->GetUseInputNormals();
   this->NormalTextureBytes = 0;
@@ -465,7 +451,7 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
       normals->SetTypedComponent(texel, 1, static_cast<float>(texels->GetComponent(texel, 1)));
     }
     uploaded = uploaded &&
-      UploadMipmappedTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM);
+      UploadTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM, true);
     this->NormalTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 4);
   }
   else
@@ -626,8 +612,8 @@ bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* a
   const unsigned int internalFormat = cones ? GL_RG8
     : values->GetNumberOfComponents() == 1  ? GL_R32F
                                             : GL_RG32F;
-  if (!UploadFetchedTexture(
-        this->AccelerationTexture, window, acceleration->GetDimensions(), values, internalFormat))
+  if (!UploadTexture(this->AccelerationTexture, window, acceleration->GetDimensions(), values,
+        internalFormat, false))
   {
     vtkErrorMacro("Could not upload the " << this->GetSearchMethodAsString()
                                           << " acceleration image to the GPU.");
