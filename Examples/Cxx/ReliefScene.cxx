@@ -159,6 +159,15 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
   return mapper;
 }
 
+void SetStones(vtkOpenGLReliefMapper* mapper, vtkPolyData* surface, double depthScale)
+{
+  mapper->SetInputData(surface);
+  mapper->SetHeightMapData(ReadImage("stones_height.png"));
+  mapper->SetDepthScale(depthScale);
+  mapper->SetLinearSteps(32);
+  mapper->SetBinarySteps(6);
+}
+
 vtkSmartPointer<vtkPolyData> DisplacedMesh(
   vtkPolyData* surface, vtkImageData* relief, double depthScale, double edgeTexels)
 {
@@ -256,11 +265,7 @@ void ShowShadowHalf(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper, vtkP
   floorActor->SetMapper(floorMapper);
   renderer->AddActor(floorActor);
 
-  mapper->SetInputData(sphere);
-  mapper->SetHeightMapData(ReliefScene::ReadImage("stones_height.png"));
-  mapper->SetDepthScale(0.1);
-  mapper->SetLinearSteps(32);
-  mapper->SetBinarySteps(6);
+  ReliefScene::SetStones(mapper, sphere, 0.1);
   vtkNew<vtkActor> sphereActor;
   sphereActor->SetMapper(mapper);
   sphereActor->GetProperty()->BackfaceCullingOn(); // closed: see past the silhouette
@@ -480,11 +485,7 @@ void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
     {
       mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
     }
-    mapper->SetInputData(torus);
-    mapper->SetHeightMapData(ReadImage("stones_height.png"));
-    mapper->SetDepthScale(0.05);
-    mapper->SetLinearSteps(32);
-    mapper->SetBinarySteps(6);
+    SetStones(mapper, torus, 0.05);
     auto actor = ReliefActor(mapper, "stones_color.png");
     // a closed shape: past the silhouette lies the background, not the far side's inside
     actor->GetProperty()->BackfaceCullingOn();

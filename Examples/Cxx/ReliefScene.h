@@ -62,6 +62,10 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper(
 vtkSmartPointer<vtkPolyData> DisplacedMesh(
   vtkPolyData* surface, vtkImageData* relief, double depthScale, double edgeTexels);
 
+/// Stones on a curved `surface`: the stones height map at `depthScale`, searched with
+/// LinearBinary 32+6 (curved relief runs far at grazing outlines).
+void SetStones(vtkOpenGLReliefMapper* mapper, vtkPolyData* surface, double depthScale);
+
 /// An actor with `mapper`, the colour texture of Data/ (none when empty) and a
 /// slightly specular material.
 vtkSmartPointer<vtkActor> ReliefActor(vtkMapper* mapper, const std::string& colorTexture);

@@ -7,7 +7,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkPolyData.h"
@@ -36,11 +35,7 @@ void Show(vtkRenderWindow* window, const View& view, int mode, double left, doub
   renderer->SetViewport(left, bottom, left + 0.5, bottom + 0.5);
   vtkNew<vtkOpenGLQuadricReliefMapper> mapper;
   mapper->SetDistanceMode(mode);
-  mapper->SetInputData(view.Shape);
-  mapper->SetHeightMapData(ReliefScene::ReadImage("stones_height.png"));
-  mapper->SetDepthScale(0.06);
-  mapper->SetLinearSteps(32);
-  mapper->SetBinarySteps(6);
+  ReliefScene::SetStones(mapper, view.Shape, 0.06);
   auto actor = ReliefScene::ReliefActor(mapper, "stones_color.png");
   actor->GetProperty()->SetBackfaceCulling(view.Closed);
   renderer->AddActor(actor);

@@ -11,7 +11,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
-#include "vtkImageData.h"
 #include "vtkLocalQuadricFilter.h"
 #include "vtkNew.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
@@ -34,11 +33,7 @@ template <typename Mapper>
 vtkSmartPointer<Mapper> Show(vtkRenderWindow* window, vtkPolyData* shape, double left, double right)
 {
   auto mapper = vtkSmartPointer<Mapper>::New();
-  mapper->SetInputData(shape);
-  mapper->SetHeightMapData(ReliefScene::ReadImage("stones_height.png"));
-  mapper->SetDepthScale(0.06);
-  mapper->SetLinearSteps(32);
-  mapper->SetBinarySteps(6);
+  ReliefScene::SetStones(mapper, shape, 0.06);
   auto renderer = ReliefScene::LitRenderer(window, 600, 300);
   renderer->SetViewport(left, 0.0, right, 1.0);
   auto actor = ReliefScene::ReliefActor(mapper, "stones_color.png");
