@@ -6,18 +6,15 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkGenericDataObjectReader.h"
-#include "vtkGeometryFilter.h"
 #include "vtkImageData.h"
 #include "vtkImageShiftScale.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
+#include "vtkOpenGLDerivativeReliefMapper.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -25,7 +22,6 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkTextureMapToCylinder.h"
@@ -33,7 +29,6 @@
 #include "vtkTextureMapToSphere.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -69,6 +64,7 @@ struct Options
   double SafetyTolerance = 0.0;
   bool Shadows = true;
   bool Quadric = false; // the curved frame: the relief carves the silhouette
+  bool Derivative = false; // the frame from screen-space derivatives: no tangents
   double Azimuth = 0.0;
   double Elevation = 0.0;
   double Zoom = 1.0;
@@ -118,6 +114,9 @@ void PrintUsage(std::ostream& os)
         "  --no-shadows         turn self-shadowing off\n"
         "  --quadric            curved relief (vtkOpenGLQuadricReliefMapper): the relief\n"
         "                       carves the outline of a curved mesh; back faces culled\n"
+        "  --derivative         tangent-free relief (vtkOpenGLDerivativeReliefMapper):\n"
+        "                       the frame from screen-space derivatives; flat shading\n"
+        "                       on a mesh without normals\n"
         "  --azimuth A          degrees around the view up, from the reset camera (default: "
      << defaults.Azimuth
      << ")\n"
@@ -239,6 +238,7 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
     { "--depth-convention", [&options]() { options.DepthConvention = true; } },
     { "--no-shadows", [&options]() { options.Shadows = false; } },
     { "--quadric", [&options]() { options.Quadric = true; } },
+    { "--derivative", [&options]() { options.Derivative = true; } },
     { "--sample-count", [&options]() { options.SampleCount = true; } },
   };
 
@@ -293,6 +293,11 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
     error = "--mesh and --height are required";
     return ParseResult::Failed;
   }
+  if (options.Quadric && options.Derivative)
+  {
+    error = "--quadric and --derivative are two frames: choose one";
+    return ParseResult::Failed;
+  }
   return ParseResult::Run;
 }
 
@@ -321,75 +326,6 @@ bool IsWritableFolderOf(const std::string& fileName, std::string& error)
     return false;
   }
   return true;
-}
-
-// Reads a surface with the VTK reader its extension calls for. A legacy .vtk file of
-// another dataset type (unstructured grid, ...) is reduced to its outer surface.
-vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& fileName, std::string& error)
-{
-  const std::string extension =
-    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(fileName));
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == ".vtp")
-  {
-    auto xmlReader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    xmlReader->SetFileName(fileName.c_str());
-    reader = xmlReader;
-  }
-  else if (extension == ".vtk")
-  {
-    auto legacyReader = vtkSmartPointer<vtkGenericDataObjectReader>::New();
-    legacyReader->SetFileName(fileName.c_str());
-    legacyReader->Update();
-    vtkDataObject* data = legacyReader->GetOutput();
-    if (vtkDataSet::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data))
-    {
-      auto surface = vtkSmartPointer<vtkGeometryFilter>::New();
-      surface->SetInputConnection(legacyReader->GetOutputPort());
-      reader = surface;
-    }
-    else
-    {
-      reader = legacyReader;
-    }
-  }
-  else if (extension == ".ply")
-  {
-    auto plyReader = vtkSmartPointer<vtkPLYReader>::New();
-    plyReader->SetFileName(fileName.c_str());
-    reader = plyReader;
-  }
-  else if (extension == ".obj")
-  {
-    auto objReader = vtkSmartPointer<vtkOBJReader>::New();
-    objReader->SetFileName(fileName.c_str());
-    reader = objReader;
-  }
-  else if (extension == ".stl")
-  {
-    auto stlReader = vtkSmartPointer<vtkSTLReader>::New();
-    stlReader->SetFileName(fileName.c_str());
-    reader = stlReader;
-  }
-  else
-  {
-    error = "mesh '" + fileName + "': unknown extension '" + extension +
-      "'; use .vtp, .vtk, .ply, .obj or .stl";
-    return nullptr;
-  }
-  reader->Update();
-  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!mesh || mesh->GetNumberOfPoints() == 0)
-  {
-    error = "could not read a mesh from '" + fileName + "'";
-    return nullptr;
-  }
-  if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
-  {
-    error = "mesh '" + fileName + "' has no polygons to carry relief";
-    return nullptr;
-  }
-  return mesh;
 }
 
 vtkSmartPointer<vtkImageData> ReadImage(
@@ -542,7 +478,7 @@ int main(int argc, char* argv[])
   {
     return fail();
   }
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(options.MeshFile, error);
+  vtkSmartPointer<vtkPolyData> mesh = ReliefScene::ReadMesh(options.MeshFile, error);
   if (!mesh)
   {
     return fail();
@@ -588,6 +524,10 @@ int main(int argc, char* argv[])
   if (options.Quadric)
   {
     mapper = vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New();
+  }
+  else if (options.Derivative)
+  {
+    mapper = vtkSmartPointer<vtkOpenGLDerivativeReliefMapper>::New();
   }
   else
   {

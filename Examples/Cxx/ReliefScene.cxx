@@ -4,14 +4,19 @@
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkGeometryFilter.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkOBJReader.h"
+#include "vtkOpenGLDerivativeReliefMapper.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPlaneSource.h"
+#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -26,10 +31,14 @@
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
 #include "vtkSphereSource.h"
+#include "vtkSTLReader.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTexture.h"
 #include "vtkTexturedSphereSource.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <vtksys/SystemTools.hxx>
 
 #include <cctype>
 #include <algorithm>
@@ -65,6 +74,75 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& name)
   reader->SetFileName(DataFile(name).c_str());
   reader->Update();
   return reader->GetOutput();
+}
+
+// Reads a surface with the VTK reader its extension calls for. A legacy .vtk file of
+// another dataset type (unstructured grid, ...) is reduced to its outer surface.
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& fileName, std::string& error)
+{
+  const std::string extension =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(fileName));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == ".vtp")
+  {
+    auto xmlReader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xmlReader->SetFileName(fileName.c_str());
+    reader = xmlReader;
+  }
+  else if (extension == ".vtk")
+  {
+    auto legacyReader = vtkSmartPointer<vtkGenericDataObjectReader>::New();
+    legacyReader->SetFileName(fileName.c_str());
+    legacyReader->Update();
+    vtkDataObject* data = legacyReader->GetOutput();
+    if (vtkDataSet::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data))
+    {
+      auto surface = vtkSmartPointer<vtkGeometryFilter>::New();
+      surface->SetInputConnection(legacyReader->GetOutputPort());
+      reader = surface;
+    }
+    else
+    {
+      reader = legacyReader;
+    }
+  }
+  else if (extension == ".ply")
+  {
+    auto plyReader = vtkSmartPointer<vtkPLYReader>::New();
+    plyReader->SetFileName(fileName.c_str());
+    reader = plyReader;
+  }
+  else if (extension == ".obj")
+  {
+    auto objReader = vtkSmartPointer<vtkOBJReader>::New();
+    objReader->SetFileName(fileName.c_str());
+    reader = objReader;
+  }
+  else if (extension == ".stl")
+  {
+    auto stlReader = vtkSmartPointer<vtkSTLReader>::New();
+    stlReader->SetFileName(fileName.c_str());
+    reader = stlReader;
+  }
+  else
+  {
+    error = "mesh '" + fileName + "': unknown extension '" + extension +
+      "'; use .vtp, .vtk, .ply, .obj or .stl";
+    return nullptr;
+  }
+  reader->Update();
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!mesh || mesh->GetNumberOfPoints() == 0)
+  {
+    error = "could not read a mesh from '" + fileName + "'";
+    return nullptr;
+  }
+  if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
+  {
+    error = "mesh '" + fileName + "' has no polygons to carry relief";
+    return nullptr;
+  }
+  return mesh;
 }
 
 vtkSmartPointer<vtkTexture> ReadTexture(const std::string& name)
@@ -497,6 +575,46 @@ void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
     camera->SetViewAngle(20.0);
     renderer->ResetCameraClippingRange();
   }
+}
+
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowDerivativeMesh(vtkRenderWindow* window, int width,
+  int height, const std::string& mesh, bool normals, double left, double right)
+{
+  std::string error;
+  vtkSmartPointer<vtkPolyData> surface = ReadMesh(DataFile(mesh), error);
+  if (!surface)
+  {
+    vtkGenericWarningMacro(<< error);
+    return nullptr;
+  }
+  if (!normals)
+  {
+    auto stripped = vtkSmartPointer<vtkPolyData>::New();
+    stripped->ShallowCopy(surface);
+    stripped->GetPointData()->SetNormals(nullptr);
+    surface = stripped;
+  }
+  auto renderer = LitRenderer(window, width, height);
+  renderer->SetViewport(left, 0.0, right, 1.0);
+  vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0))->SetPosition(-1.0, -1.0, 1.0);
+  auto mapper = vtkSmartPointer<vtkOpenGLDerivativeReliefMapper>::New();
+  SetStones(mapper, surface, 0.02);
+  renderer->AddActor(ReliefActor(mapper, "stones_color.png"));
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, -1.0, 0.6);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  camera->Dolly(1.3);
+  renderer->ResetCameraClippingRange();
+  return mapper;
+}
+
+void ShowDerivativeFrames(vtkRenderWindow* window, int width, int height)
+{
+  ShowDerivativeMesh(window, width, height, "torus.obj", true, 0.0, 1.0 / 3.0);
+  ShowDerivativeMesh(window, width, height, "torus.obj", false, 1.0 / 3.0, 2.0 / 3.0);
+  ShowDerivativeMesh(window, width, height, "icosahedron.ply", false, 2.0 / 3.0, 1.0);
 }
 
 void AddSpotlight(vtkRenderer* renderer)

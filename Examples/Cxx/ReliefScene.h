@@ -31,6 +31,11 @@ std::string DataFile(const std::string& name);
 /// A height map of Data/, read with vtkOpenImageIOReader.
 vtkSmartPointer<vtkImageData> ReadImage(const std::string& name);
 
+/// A surface read with the VTK reader its extension calls for (.vtp .vtk .ply .obj .stl;
+/// a legacy file of another dataset type is reduced to its outer surface), or nullptr
+/// with `error` saying why (unreadable, no polygons).
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& fileName, std::string& error);
+
 /// A colour texture of Data/, repeating, interpolated and mipmapped.
 vtkSmartPointer<vtkTexture> ReadTexture(const std::string& name);
 
@@ -111,6 +116,14 @@ void ShowPlainBesideRelief(vtkRenderWindow* window, int width, int height);
 /// Stones on a coarse torus, close on its outline: the flat frame (left) keeps the
 /// polygons' silhouette, the quadric frame (right) lets the relief carve it.
 void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height);
+/// Stones on `mesh` (a file of Data/, read as is: no tangents) drawn by
+/// vtkOpenGLDerivativeReliefMapper, without the file's normals when `normals` is false
+/// (the flat frame), in the viewport (left, 0, right, 1) of `window`.
+vtkSmartPointer<vtkOpenGLReliefMapper> ShowDerivativeMesh(vtkRenderWindow* window, int width,
+  int height, const std::string& mesh, bool normals, double left = 0.0, double right = 1.0);
+/// Tangent-free relief: torus.obj with its normals (smooth frame, left), without them
+/// (flat frame, middle), and icosahedron.ply (seed 003's faceted crystal, right).
+void ShowDerivativeFrames(vtkRenderWindow* window, int width, int height);
 /// A spotlight 3 above the origin, pointing down, as the only light of `renderer`.
 void AddSpotlight(vtkRenderer* renderer);
 /// Renders `renderer` through VTK's shadow-map passes (baker, then shadows).

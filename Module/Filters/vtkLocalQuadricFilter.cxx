@@ -183,7 +183,7 @@ int vtkLocalQuadricFilter::RequestData(
   vtkReliefForwardMessages(frame, this);
   frame->SetInputData(source);
   frame->Update();
-  if (!frame->GetHasTangentFrame())
+  if (!frame->GetHasSurface())
   {
     output->ShallowCopy(input);
     return 1;

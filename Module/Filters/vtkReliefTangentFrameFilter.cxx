@@ -13,7 +13,6 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkPolyDataTangents.h"
 #include "vtkSmartPointer.h"
-#include "vtkTriangleFilter.h"
 
 #include <glm/glm.hpp>
 
@@ -24,41 +23,6 @@ vtkStandardNewMacro(vtkReliefTangentFrameFilter);
 
 namespace
 {
-// True when the mesh holds triangles and nothing else (no vertices, lines or strips).
-bool IsTrianglesOnly(vtkPolyData* mesh)
-{
-  if (mesh->GetNumberOfStrips() > 0 || mesh->GetNumberOfVerts() > 0 ||
-    mesh->GetNumberOfLines() > 0)
-  {
-    return false;
-  }
-  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    polys->GetCurrentCell(size, ids);
-    if (size != 3)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-// The array itself when it has a name, else a named copy (the input stays untouched).
-vtkSmartPointer<vtkDataArray> Named(vtkDataArray* array, const char* name)
-{
-  if (array->GetName())
-  {
-    return array;
-  }
-  auto named = vtk::TakeSmartPointer(array->NewInstance());
-  named->DeepCopy(array);
-  named->SetName(name);
-  return named;
-}
-
 glm::dvec3 PointOf(vtkPolyData* mesh, vtkIdType id)
 {
   double p[3];
@@ -183,33 +147,10 @@ int vtkReliefTangentFrameFilter::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->HasTangentFrame = false;
-
-  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
-  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  vtkSmartPointer<vtkPolyData> mesh = this->ExtractTriangles(input);
+  this->HasSurface = mesh != nullptr;
+  if (!this->HasSurface)
   {
-    vtkErrorMacro("The mesh has no 2D point texture coordinates, so relief has nowhere to go "
-                  "and the mesh is drawn without it. Map some first with vtkTextureMapToPlane, "
-                  "vtkTextureMapToCylinder or vtkTextureMapToSphere.");
-    output->ShallowCopy(input);
-    return 1;
-  }
-
-  // relief lives on polygons: vertices and lines are left out of the relief surface
-  vtkSmartPointer<vtkPolyData> mesh = input;
-  if (!IsTrianglesOnly(mesh))
-  {
-    vtkNew<vtkTriangleFilter> triangulate;
-    triangulate->SetInputData(mesh);
-    triangulate->PassVertsOff();
-    triangulate->PassLinesOff();
-    triangulate->Update();
-    mesh = triangulate->GetOutput();
-  }
-  if (mesh->GetNumberOfPolys() == 0)
-  {
-    vtkErrorMacro("The mesh has no polygons: relief is drawn on polygons only. Give a "
-                  "surface (vtkGeometryFilter extracts one from other datasets).");
     output->ShallowCopy(input);
     return 1;
   }
@@ -240,12 +181,10 @@ int vtkReliefTangentFrameFilter::RequestData(
 
   output->ShallowCopy(mesh);
   // the mapper binds arrays to shader inputs by name
+  NameAttributes(output);
   vtkPointData* pointData = output->GetPointData();
-  pointData->SetNormals(Named(pointData->GetNormals(), "Normals"));
   pointData->SetTangents(OrthonormalTangents(pointData->GetNormals(), pointData->GetTangents()));
-  pointData->SetTCoords(Named(pointData->GetTCoords(), "TCoords"));
   pointData->AddArray(ComputeTextureScale(output));
-  this->HasTangentFrame = true;
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -254,5 +193,4 @@ void vtkReliefTangentFrameFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
-  os << indent << "HasTangentFrame: " << this->HasTangentFrame << "\n";
 }

@@ -2,29 +2,29 @@
  * @class   vtkReliefTangentFrameFilter
  * @brief   prepare a mesh for tangent-space relief mapping
  *
- * Passes a mesh with texture coordinates through and adds what a relief mapper needs
+ * vtkReliefSurfaceFilter's triangles, with what a tangent-space relief mapper needs
  * at each point: normals (vtkPolyDataNormals, when the input has none), a tangent
  * along increasing u (the input's own tangents when it has them, else
  * vtkPolyDataTangents), and the texture scale "ReliefTextureScale": the model length
  * of one texture unit along the tangent and along the bitangent cross(normal, tangent),
  * s_x and s_y of Oliveira and Policarpo 2005, Sec. 3.4. s_y is negative where the
- * texture is mirrored. Polygons and strips are triangulated first.
+ * texture is mirrored.
  *
- * A mesh without texture coordinates is an error (map some with
- * vtkTextureMapToPlane, vtkTextureMapToCylinder or vtkTextureMapToSphere); the output
- * is then the input, unchanged.
+ * A mesh without texture coordinates or polygons is an error, as for
+ * vtkReliefSurfaceFilter; the output is then the input, unchanged, and GetHasSurface()
+ * is false.
  */
 #ifndef vtkReliefTangentFrameFilter_h
 #define vtkReliefTangentFrameFilter_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkReliefFiltersModule.h"
+#include "vtkReliefSurfaceFilter.h"
 
-class VTKRELIEFFILTERS_EXPORT vtkReliefTangentFrameFilter : public vtkPolyDataAlgorithm
+class VTKRELIEFFILTERS_EXPORT vtkReliefTangentFrameFilter : public vtkReliefSurfaceFilter
 {
 public:
   static vtkReliefTangentFrameFilter* New();
-  vtkTypeMacro(vtkReliefTangentFrameFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkReliefTangentFrameFilter, vtkReliefSurfaceFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Name of the two-component point array holding (s_x, s_y).
@@ -37,9 +37,6 @@ public:
   vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
 
-  /// True when the last update found texture coordinates and built the frame.
-  vtkGetMacro(HasTangentFrame, bool);
-
 protected:
   vtkReliefTangentFrameFilter();
   ~vtkReliefTangentFrameFilter() override;
@@ -47,7 +44,6 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double FeatureAngle = 30.0;
-  bool HasTangentFrame = false;
 
 private:
   vtkReliefTangentFrameFilter(const vtkReliefTangentFrameFilter&) = delete;

@@ -96,8 +96,8 @@ const char* vtkOpenGLQuadricReliefMapper::GetUnsupportedSearchReason()
 
 std::string vtkOpenGLQuadricReliefMapper::GetFrameDefines()
 {
-  return this->DistanceMode == EXACT ? "#define RELIEF_QUADRIC\n#define RELIEF_EXACT_DISTANCE\n"
-                                     : "#define RELIEF_QUADRIC\n";
+  return this->Superclass::GetFrameDefines() + "#define RELIEF_QUADRIC\n" +
+    (this->DistanceMode == EXACT ? "#define RELIEF_EXACT_DISTANCE\n" : "");
 }
 
 void vtkOpenGLQuadricReliefMapper::SetDistanceMode(int mode)

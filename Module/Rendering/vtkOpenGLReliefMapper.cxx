@@ -33,6 +33,7 @@
 
 #include "vtkReliefCommon.h"
 #include "vtkReliefConeSearch.h"
+#include "vtkReliefDerivativeFrame.h"
 #include "vtkReliefQuadric.h"
 #include "vtkReliefFragmentDec.h"
 #include "vtkReliefFragmentImpl.h"
@@ -56,12 +57,6 @@ namespace
 constexpr int MinimumLinearSteps = 1;
 constexpr int MaximumLinearSteps = 512;
 constexpr int MaximumBinarySteps = 32;
-
-// Shader inputs of the relief frame, bound by name to the relief surface's arrays.
-constexpr const char* NormalAttribute = "reliefNormalMC";
-constexpr const char* TangentAttribute = "reliefTangentMC";
-constexpr const char* TCoordAttribute = "reliefTCoordMC";
-constexpr const char* TextureScaleAttribute = "reliefTextureScaleMC";
 
 // Bytes of a w x h texture of `texelBytes` a texel with all its mipmap levels.
 vtkIdType MipmappedBytes(int width, int height, int texelBytes)
@@ -357,7 +352,7 @@ bool vtkOpenGLReliefMapper::UpdateReliefSurface()
   // filter, reported through the mapper once per change of the mesh
   this->TangentFrame->SetInputData(this->CurrentInput);
   this->TangentFrame->Update();
-  if (!this->TangentFrame->GetHasTangentFrame())
+  if (!this->TangentFrame->GetHasSurface())
   {
     return false;
   }
@@ -654,6 +649,11 @@ void vtkOpenGLReliefMapper::MapReliefAttribute(const char* shaderInput, const ch
   }
 }
 
+std::string vtkOpenGLReliefMapper::GetFrameDefines()
+{
+  return "#define RELIEF_TANGENT_FRAME\n#define RELIEF_VERTEX_NORMALS\n";
+}
+
 bool vtkOpenGLReliefMapper::UpdateRelief(vtkRenderer* ren)
 {
   const bool relief = this->UpdateReliefSurface() && this->UpdateReliefTexture(ren);
@@ -776,7 +776,8 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShader* fragmentShader, int lightComplexity)
 {
   std::string declarations = vtkReliefFragmentDec;
-  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common",
+    std::string(vtkReliefCommon) + vtkReliefDerivativeFrame);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
     std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
       vtkReliefConeSearch + vtkReliefQuadric + vtkReliefSearchMethod);
@@ -952,8 +953,15 @@ void vtkOpenGLReliefMapper::SetCameraShaderParameters(
   vtkNew<vtkMatrix3x3> normals;
   vtkMatrix3x3::Invert(directions, normals);
   normals->Transpose();
-  program->SetUniformMatrix("reliefDirectionMatrix", directions);
-  program->SetUniformMatrix("reliefNormalMatrix", normals);
+  // each frame reads what it needs of them
+  if (program->IsUniformUsed("reliefDirectionMatrix"))
+  {
+    program->SetUniformMatrix("reliefDirectionMatrix", directions);
+  }
+  if (program->IsUniformUsed("reliefNormalMatrix"))
+  {
+    program->SetUniformMatrix("reliefNormalMatrix", normals);
+  }
 }
 
 vtkIdType vtkOpenGLReliefMapper::GetTextureBytes()

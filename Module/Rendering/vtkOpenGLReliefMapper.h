@@ -203,7 +203,7 @@ public:
   vtkReliefTextureFilter* GetReliefTextureFilter();
 
   /// The mesh as rendered: triangulated, with normals, tangents and texture scale.
-  vtkPolyData* GetReliefSurface();
+  virtual vtkPolyData* GetReliefSurface();
 
   /**
    * GPU memory the relief's textures take, in bytes, as last uploaded by a render:
@@ -243,14 +243,21 @@ protected:
   void SetActiveSearchMethod(int method);
   /// Binds the frame's arrays to the shader inputs (none when relief is not drawn).
   virtual void MapReliefAttributes(bool relief);
+  ///@{
+  /// Shader inputs of the frame, bound by name to the relief surface's point arrays.
+  static constexpr const char* NormalAttribute = "reliefNormalMC";
+  static constexpr const char* TangentAttribute = "reliefTangentMC";
+  static constexpr const char* TCoordAttribute = "reliefTCoordMC";
+  static constexpr const char* TextureScaleAttribute = "reliefTextureScaleMC";
+  ///@}
   /// Binds one shader input to a point array of CurrentInput (unbinds it for nullptr).
   void MapReliefAttribute(const char* shaderInput, const char* arrayName);
   /// Whether this mapper's frame can search with `method`; if not, LinearBinary is used.
   virtual bool SupportsSearchMethod(int) { return true; }
   /// Why SupportsSearchMethod() refused, for the warning.
   virtual const char* GetUnsupportedSearchReason() { return ""; }
-  /// Defines that select the frame, in every shader stage (none: the flat frame).
-  virtual std::string GetFrameDefines() { return std::string(); }
+  /// Defines that select the frame, in every shader stage: the tangent frame here.
+  virtual std::string GetFrameDefines();
   void InsertReliefVertexShader(vtkShader* vertexShader);
   void InsertReliefFragmentShader(vtkShader* fragmentShader, int lightComplexity);
   void InsertReliefGeometryShader(vtkShader* geometryShader);

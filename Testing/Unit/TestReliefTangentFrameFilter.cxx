@@ -58,7 +58,7 @@ TEST(ReliefTangentFrameFilter, TextureScaleIsTheModelLengthOfOneTextureUnit)
 {
   vtkNew<vtkReliefTangentFrameFilter> filter;
   vtkPolyData* frame = Frame(filter, Rectangle(2.0, 0.5));
-  ASSERT_TRUE(filter->GetHasTangentFrame());
+  ASSERT_TRUE(filter->GetHasSurface());
   EXPECT_EQ(frame->GetNumberOfPolys(), 2); // the quad became two triangles
   ASSERT_NE(Scale(frame), nullptr);
   ASSERT_NE(frame->GetPointData()->GetTangents(), nullptr);
@@ -148,7 +148,7 @@ TEST(ReliefTangentFrameFilter, MeshWithoutTextureCoordinatesIsAnErrorAndPassesTh
   vtkPolyData* frame = Frame(filter, sphere->GetOutput());
   EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
   EXPECT_TRUE(recorder->AnyMessageContains("vtkTextureMapToCylinder"));
-  EXPECT_FALSE(filter->GetHasTangentFrame());
+  EXPECT_FALSE(filter->GetHasSurface());
   EXPECT_EQ(frame->GetNumberOfPoints(), sphere->GetOutput()->GetNumberOfPoints());
   EXPECT_EQ(Scale(frame), nullptr);
 }
@@ -167,7 +167,7 @@ TEST(ReliefTangentFrameFilter, LinesAndVerticesAreLeftOutAndLinesAloneAreAnError
   mixed->SetVerts(verts);
   vtkNew<vtkReliefTangentFrameFilter> filter;
   vtkPolyData* frame = Frame(filter, mixed);
-  ASSERT_TRUE(filter->GetHasTangentFrame());
+  ASSERT_TRUE(filter->GetHasSurface());
   EXPECT_EQ(frame->GetNumberOfPolys(), 2);
   EXPECT_EQ(frame->GetNumberOfLines() + frame->GetNumberOfVerts(), 0);
 
@@ -178,7 +178,7 @@ TEST(ReliefTangentFrameFilter, LinesAndVerticesAreLeftOutAndLinesAloneAreAnError
   vtkNew<ReliefEventRecorder> recorder;
   filter->AddObserver(vtkCommand::ErrorEvent, recorder);
   Frame(filter, linesOnly);
-  EXPECT_FALSE(filter->GetHasTangentFrame());
+  EXPECT_FALSE(filter->GetHasSurface());
   EXPECT_EQ(recorder->Count(vtkCommand::ErrorEvent), 1);
   EXPECT_TRUE(recorder->AnyMessageContains("no polygons"));
 }
@@ -196,7 +196,7 @@ TEST(ReliefTangentFrameFilter, TrianglesWithoutTextureAreaGiveAFiniteFrame)
   tcoords->SetTuple(5, tcoords->GetTuple(6));
   vtkNew<vtkReliefTangentFrameFilter> filter;
   vtkPolyData* frame = Frame(filter, grid);
-  ASSERT_TRUE(filter->GetHasTangentFrame());
+  ASSERT_TRUE(filter->GetHasSurface());
   vtkDataArray* tangents = frame->GetPointData()->GetTangents();
   for (vtkIdType i = 0; i < frame->GetNumberOfPoints(); ++i)
   {

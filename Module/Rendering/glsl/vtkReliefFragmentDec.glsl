@@ -16,10 +16,14 @@ uniform int reliefDepthCorrection;
 uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
 uniform mat4 reliefVCDCMatrix;
 in vec3 reliefPositionVSOutput;
-in vec3 reliefNormalVSOutput;
-in vec3 reliefTangentVSOutput;
 in vec2 reliefTCoordVSOutput;
+#ifdef RELIEF_VERTEX_NORMALS
+in vec3 reliefNormalVSOutput;
+#endif
+#ifdef RELIEF_TANGENT_FRAME
+in vec3 reliefTangentVSOutput;
 in vec2 reliefTextureScaleVSOutput;
+#endif
 #ifdef RELIEF_QUADRIC
 in vec2 reliefQuadricVSOutput;
 #endif
@@ -104,17 +108,17 @@ vec2 reliefDepthGradient(vec2 uv)
 //VTK::Relief::Common
 //VTK::Relief::Search
 
-vec3 reliefFrameT;
-vec3 reliefFrameB;
+// The frame: gradients of u and v in view space, and the unit normal depth is measured
+// against; a view-space direction d moves (u, v) by (dot(d, reliefAxisU), dot(d, reliefAxisV)).
+vec3 reliefAxisU;
+vec3 reliefAxisV;
 vec3 reliefFrameN;
-vec2 reliefScale;
 ReliefHit reliefViewHit;
 
 // A view-space direction in texture-space units (du, dv, ddepth); depth grows inward.
 vec3 reliefToTexture(vec3 directionVC)
 {
-  return vec3(dot(directionVC, reliefFrameT) / reliefScale.x,
-    dot(directionVC, reliefFrameB) / reliefScale.y,
+  return vec3(dot(directionVC, reliefAxisU), dot(directionVC, reliefAxisV),
     -dot(directionVC, reliefFrameN) / reliefDepthScale);
 }
 

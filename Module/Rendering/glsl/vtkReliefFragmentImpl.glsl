@@ -2,24 +2,48 @@
   reliefGradX = dFdx(reliefTCoordVSOutput);
   reliefGradY = dFdy(reliefTCoordVSOutput);
   reliefLod = reliefLevel(reliefTextureSize);
+  vec3 reliefViewVC =
+    cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
+  // false where the frame holds no texture mapping: the fragment is shaded plainly
+  bool reliefFrameUsable = true;
+#ifdef RELIEF_DERIVATIVE_FRAME
+  // the derivative frame (seed 003): the triangle's own mapping, from how position and
+  // texture coordinates change from pixel to pixel; its normal faces the viewer
+  vec3 reliefAlongX = dFdx(reliefPositionVSOutput);
+  vec3 reliefAlongY = dFdy(reliefPositionVSOutput);
+  vec3 reliefFaceN = cross(reliefAlongX, reliefAlongY);
+  reliefFaceN = dot(reliefFaceN, reliefViewVC) > 0.0 ? -reliefFaceN : reliefFaceN;
+  reliefFrameN = reliefUnitOr(reliefFaceN, -reliefViewVC);
+#ifdef RELIEF_VERTEX_NORMALS
+  // smooth: depth along the interpolated normal, turned to the face's visible side
+  vec3 reliefVertexN = reliefUnitOr(reliefNormalVSOutput, reliefFrameN);
+  reliefFrameN = dot(reliefVertexN, reliefFaceN) < 0.0 ? -reliefVertexN : reliefVertexN;
+#endif
+  ReliefAxes reliefAxes = reliefDerivativeAxes(
+    reliefAlongX, reliefAlongY, reliefGradX, reliefGradY, reliefFrameN);
+  reliefAxisU = reliefAxes.u;
+  reliefAxisV = reliefAxes.v;
+  reliefFrameUsable = reliefAxes.usable;
+#else
   reliefFrameN = normalize(reliefNormalVSOutput);
-  reliefFrameT = normalize(
+  vec3 reliefFrameT = normalize(
     reliefTangentVSOutput - reliefFrameN * dot(reliefFrameN, reliefTangentVSOutput));
-  reliefFrameB = cross(reliefFrameN, reliefFrameT);
+  vec3 reliefFrameB = cross(reliefFrameN, reliefFrameT);
   // seen from behind, the relief is carved into the back: the normal turns, the
   // texture axes stay
   if (gl_FrontFacing == false) { reliefFrameN = -reliefFrameN; }
-  reliefScale = reliefTextureScaleVSOutput;
+  vec2 reliefScale = reliefTextureScaleVSOutput;
   if (abs(reliefScale.x) < 1e-20) { reliefScale.x = 1e-20; }
   if (abs(reliefScale.y) < 1e-20) { reliefScale.y = 1e-20; }
-  vec3 reliefViewVC =
-    cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
+  reliefAxisU = reliefFrameT / reliefScale.x;
+  reliefAxisV = reliefFrameB / reliefScale.y;
+#endif
 
   // search; the hit's distance along the view ray (world units), and the tilt of the
-  // reference surface there (the quadric's slope; none for the flat frame)
+  // reference surface there in view space (the quadric's slope; none for flat frames)
   float reliefHitDistance = 0.0;
-  vec2 reliefSurfaceSlope = vec2(0.0);
-  if (reliefDepthScale > 0.0)
+  vec3 reliefSurfaceSlope = vec3(0.0);
+  if (reliefDepthScale > 0.0 && reliefFrameUsable)
   {
 #ifdef RELIEF_QUADRIC
     // the curved frame (seed 000 s3.1-3.4): the view ray bends below the quadric; a ray
@@ -41,7 +65,8 @@
       discard;
     }
     reliefHitDistance = reliefViewHit.t * reliefRange;
-    reliefSurfaceSlope = -2.0 * reliefQuadric * reliefViewTF.xy * reliefHitDistance;
+    vec2 reliefQuadricSlope = -2.0 * reliefQuadric * reliefViewTF.xy * reliefHitDistance;
+    reliefSurfaceSlope = reliefFrameT * reliefQuadricSlope.x + reliefFrameB * reliefQuadricSlope.y;
 #else
     ReliefRay reliefViewRayTS =
       reliefViewRay(reliefTCoordVSOutput, reliefToTexture(reliefViewVC));
@@ -66,11 +91,10 @@
   // A colour texture that does not repeat reads right wherever the hit stays that close.
   reliefHitTCoord -= round(reliefHitTCoord - reliefTCoordVSOutput);
   vec3 reliefHitVC = reliefPositionVSOutput + reliefViewVC * reliefHitDistance;
-  vec2 reliefSlope =
-    reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0) / reliefScale;
-  vec3 reliefNormalTS = normalize(vec3(reliefSlope + reliefSurfaceSlope, 1.0));
-  vec3 reliefLitNormalVC = normalize(reliefFrameT * reliefNormalTS.x +
-    reliefFrameB * reliefNormalTS.y + reliefFrameN * reliefNormalTS.z);
+  // the depth's gradient along the surface tilts the normal: n = N + s_z grad(depth)
+  vec2 reliefSlope = reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0);
+  vec3 reliefLitNormalVC = normalize(reliefFrameN + reliefSurfaceSlope +
+    reliefAxisU * reliefSlope.x + reliefAxisV * reliefSlope.y);
   vec4 reliefHitDC = reliefVCDCMatrix * vec4(reliefHitVC, 1.0);
   float reliefFragDepth = reliefDepthCorrection == 1 ?
     clamp(0.5 * reliefHitDC.z / reliefHitDC.w + 0.5, 0.0, 1.0) : gl_FragCoord.z;

@@ -1,5 +1,9 @@
   reliefPositionVSOutput = (MCVCMatrix * vertexMC).xyz;
+  reliefTCoordVSOutput = reliefTCoordMC;
+#ifdef RELIEF_VERTEX_NORMALS
   reliefNormalVSOutput = reliefNormalMatrix * reliefNormalMC;
+#endif
+#ifdef RELIEF_TANGENT_FRAME
   // unit, perpendicular model axes: only the actor's transform may stretch them
   vec3 reliefUnitNormalMC = normalize(reliefNormalMC);
   vec3 reliefUnitTangentMC = normalize(reliefTangentMC -
@@ -11,7 +15,7 @@
   // an actor's scale stretches the tile as seen from the camera: carry it into s_x, s_y
   reliefTextureScaleVSOutput = reliefTextureScaleMC *
     vec2(length(reliefTangentView), length(reliefBitangentView));
-  reliefTCoordVSOutput = reliefTCoordMC;
+#endif
 #ifdef RELIEF_QUADRIC
   // curvature is 1 / length: an actor's scale k turns a into a / k; NaN is a plane
   reliefQuadricVSOutput = any(isnan(reliefQuadricMC)) || any(isinf(reliefQuadricMC)) ?
