@@ -10,6 +10,7 @@
 // (seed 002's Table 1), the acceleration filters' run times, and every method's speed
 // against its accuracy (ReliefAccuracy.h).
 #include "ReliefAccuracy.h"
+#include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
 #include "ReliefScene.h"
 #include "ReliefSweeps.h"
@@ -83,7 +84,8 @@ bool KnownSections(const std::string& list)
   while (std::getline(sections, section, ','))
   {
     if (section != "plain" && section != "methods" && section != "filters" &&
-      section != "accuracy" && section != "sweeps" && section != "quadric")
+      section != "accuracy" && section != "sweeps" && section != "quadric" &&
+      section != "derivative")
     {
       return false;
     }
@@ -313,15 +315,16 @@ int main(int argc, char* argv[])
       }
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
-                   "                      filters, accuracy, sweeps, quadric)\n"
+                   "                      filters, accuracy, sweeps, quadric, derivative)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
                    "method at three height-map sizes, every method's speed against its\n"
                    "accuracy, and its error as view angle, feature width, curvature and\n"
-                   "depth scale sweep, and the quadric frame's silhouettes on curved shapes.\n"
+                   "depth scale sweep, the quadric frame's silhouettes on curved shapes, and\n"
+                   "the derivative frame against the tangent frame, with its seams at creases.\n"
                    "--report writes the timing tables, --results the accuracy study, the\n"
-                   "sweeps and the quadric study with their charts (PNG, in images/ beside\n"
+                   "sweeps, the quadric and derivative studies with their charts (PNG, in images/ beside\n"
                    "FILE.md), each with machine and versions. --quick: small sizes and few\n"
                    "frames, a smoke run.\n";
       return std::strcmp(argv[i], "--help") ? 2 : 0;
@@ -331,7 +334,7 @@ int main(int argc, char* argv[])
   if (!only.empty() && !report.empty())
   {
     std::cerr << "relief bench: --report writes every timing table; run it without --only "
-                 "(--results may go with --only accuracy,sweeps,quadric).\n";
+                 "(--results may go with --only accuracy,sweeps,quadric,derivative).\n";
     return 2;
   }
   if (quick)
@@ -457,6 +460,24 @@ int main(int argc, char* argv[])
   const std::string quadricSection = wanted("quadric")
     ? ReliefQuadricStudy::Report(ReliefQuadricStudy::Measure(quadric), quadric)
     : "(not run)\n";
+  ReliefDerivativeStudy::Options derivative;
+  derivative.Frames = std::max(1, frames / 2);
+  derivative.Rounds = quick ? 1 : 2;
+  if (quick)
+  {
+    derivative.Width = 160;
+    derivative.Height = 120;
+    derivative.HeightMapSize = 32;
+    derivative.Creases = { 0.0, 20.0, 45.0 };
+    derivative.ViewAngles = { 0.0, 45.0 };
+  }
+  derivative.ImageDirectory = accuracy.ImageDirectory;
+  const std::string derivativeSection = wanted("derivative")
+    ? ReliefDerivativeStudy::Report(ReliefDerivativeStudy::MeasureAccuracy(derivative),
+        ReliefDerivativeStudy::MeasureSeams(derivative),
+        ReliefDerivativeStudy::MeasureFrameError({ 10.0, 30.0, 50.0, 60.0, 70.0, 80.0, 85.0 }),
+        derivative)
+    : "(not run)\n";
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -529,7 +550,7 @@ int main(int argc, char* argv[])
     std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads.\n\n";
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
-            << sweepsSection << "\n" << quadricSection;
+            << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection;
 
   if (!report.empty())
   {
@@ -548,7 +569,8 @@ int main(int argc, char* argv[])
         << "Produced by `./relief bench --results " << results << "`.\n\n"
         << machine.str() << "\n" << accuracySection
         << "\n## Stability: where each method fails\n\n" << sweepsSection
-        << "\n## Curved surfaces: the quadric frame's silhouettes\n\n" << quadricSection;
+        << "\n## Curved surfaces: the quadric frame's silhouettes\n\n" << quadricSection
+        << "\n## Tangent-free relief: the derivative frame\n\n" << derivativeSection;
     std::cout << "written to " << results << "\n";
   }
   return 0;

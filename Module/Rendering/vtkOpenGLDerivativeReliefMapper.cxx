@@ -4,6 +4,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkReliefForwardMessages.h"
 #include "vtkReliefSurfaceFilter.h"
 
@@ -12,13 +13,28 @@ vtkStandardNewMacro(vtkOpenGLDerivativeReliefMapper);
 vtkOpenGLDerivativeReliefMapper::vtkOpenGLDerivativeReliefMapper()
 {
   vtkReliefForwardMessages(this->Surface, this);
+  vtkReliefForwardMessages(this->Normals, this);
+  this->Normals->SetInputConnection(this->Surface->GetOutputPort());
+  this->Normals->SplittingOff();
+  this->Normals->ComputeCellNormalsOff();
 }
 
 vtkOpenGLDerivativeReliefMapper::~vtkOpenGLDerivativeReliefMapper() = default;
 
 vtkPolyData* vtkOpenGLDerivativeReliefMapper::GetReliefSurface()
 {
-  return this->Surface->GetOutput();
+  vtkPolyData* surface = this->Surface->GetOutput();
+  const bool computed = this->ComputeNormals && !surface->GetPointData()->GetNormals();
+  return computed ? this->Normals->GetOutput() : surface;
+}
+
+void vtkOpenGLDerivativeReliefMapper::SetComputeNormals(bool compute)
+{
+  if (compute != this->ComputeNormals)
+  {
+    this->ComputeNormals = compute;
+    this->Modified();
+  }
 }
 
 bool vtkOpenGLDerivativeReliefMapper::UpdateReliefSurface()
@@ -29,7 +45,11 @@ bool vtkOpenGLDerivativeReliefMapper::UpdateReliefSurface()
   {
     return false; // the filter has said why, once per change of the mesh
   }
-  this->CurrentInput = this->Surface->GetOutput();
+  this->CurrentInput = this->GetReliefSurface();
+  if (this->CurrentInput == this->Normals->GetOutput())
+  {
+    this->Normals->Update(); // once per change of the mesh
+  }
   const bool vertexNormals = this->CurrentInput->GetPointData()->GetNormals() != nullptr;
   if (vertexNormals != this->VertexNormals)
   {
@@ -59,6 +79,7 @@ std::string vtkOpenGLDerivativeReliefMapper::GetFrameDefines()
 void vtkOpenGLDerivativeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "ComputeNormals: " << this->ComputeNormals << "\n";
   os << indent << "VertexNormals: " << this->VertexNormals << "\n";
   os << indent << "Surface:\n";
   this->Surface->PrintSelf(os, indent.GetNextIndent());

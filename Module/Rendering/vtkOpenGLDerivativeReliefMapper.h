@@ -22,7 +22,8 @@
  *   and the texture no longer tears there.
  * - Without normals the frame is the face's: flat shading, and the relief tears at each
  *   edge by an amount that grows with the crease angle and the depth (the seed's
- *   "faceted crystal"); Documentation/derivative.md measures it.
+ *   "faceted crystal"; Documentation/derivative.md measures it). ComputeNormalsOn()
+ *   gives such a mesh smooth point normals instead, and with them the smooth frame.
  *
  * Where the derivatives hold no mapping (texture coordinates constant or collinear over
  * a triangle) the fragment is shaded plainly, without relief. A mesh without texture
@@ -34,6 +35,7 @@
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkReliefRenderingModule.h" // For export macro
 
+class vtkPolyDataNormals;
 class vtkReliefSurfaceFilter;
 
 class VTKRELIEFRENDERING_EXPORT vtkOpenGLDerivativeReliefMapper : public vtkOpenGLReliefMapper
@@ -46,6 +48,19 @@ public:
   /// The mesh as rendered: triangulated, with its texture coordinates and normals, if any.
   vtkPolyData* GetReliefSurface() override;
 
+  ///@{
+  /**
+   * For a mesh without point normals: off (default), each face's own frame, flat
+   * shading and tearing at the edges; on, smooth point normals computed once per change
+   * of the mesh (vtkPolyDataNormals, edges never split), the smooth frame and no
+   * tearing where faces share points. A mesh's own normals are used either way.
+   * Changing it rebuilds the shader.
+   */
+  void SetComputeNormals(bool compute);
+  vtkGetMacro(ComputeNormals, bool);
+  vtkBooleanMacro(ComputeNormals, bool);
+  ///@}
+
 protected:
   vtkOpenGLDerivativeReliefMapper();
   ~vtkOpenGLDerivativeReliefMapper() override;
@@ -55,6 +70,8 @@ protected:
   std::string GetFrameDefines() override;
 
   vtkNew<vtkReliefSurfaceFilter> Surface;
+  vtkNew<vtkPolyDataNormals> Normals; // for ComputeNormals
+  bool ComputeNormals = false;
   bool VertexNormals = false; // the surface has point normals: smooth frame
 
 private:

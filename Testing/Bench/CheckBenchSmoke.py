@@ -1,8 +1,8 @@
 """Runs ReliefBench --quick on the accuracy study (one search method), the stability
-sweeps and the quadric study, and checks what it writes: the results table (every
-expected row, every figure a finite number, the truth error-free, the exact search closer
-to the truth than the dense mesh and the mesh than the bare polygons), a table per sweep,
-the quadric study's rows, and every chart."""
+sweeps, the quadric and the derivative studies, and checks what it writes: the results
+table (every expected row, every figure a finite number, the truth error-free, the exact
+search closer to the truth than the dense mesh and the mesh than the bare polygons), a
+table per sweep, the quadric and derivative studies' rows, and every chart."""
 import argparse
 import math
 import os
@@ -15,8 +15,13 @@ EXPECTED_ROWS = ["ConeStep", "dense mesh", "coarse polygons", "ground truth"]
 FIGURE_COLUMNS = range(2, 13)  # wrong pixels .. GPU MB
 CHARTS = ["accuracy_time.png", "accuracy_samples.png", "sweep_angle.png", "sweep_width.png",
           "sweep_curvature.png", "sweep_saddle.png", "sweep_crease.png", "sweep_depth.png",
-          "quadric_silhouette_error.png"]
+          "quadric_silhouette_error.png", "derivative_accuracy.png", "derivative_frame_error.png",
+          "derivative_seam_colour_crease.png", "derivative_seam_depth_crease.png",
+          "derivative_seam_colour_view.png", "derivative_seam_depth_view.png"]
 QUADRIC_FRAMES = ["flat", "quadric, approximate distance", "quadric, exact distance"]
+DERIVATIVE_FRAMES = ["tangent", "derivative"]
+SEAM_FRAMES = ["tangent, smooth normals", "tangent, split normals", "derivative, ComputeNormals",
+               "derivative, no normals"]
 SWEEPS = ["view angle", "wall width", "sphere radius", "k of the saddle", "crease angle",
           "DepthScale"]
 
@@ -78,6 +83,31 @@ def check_quadric(text):
             figure(cell)
 
 
+def check_derivative(text):
+    """The derivative study: accuracy rows per shape, view and frame; seam rows per crease
+    (quick: 3) and view (quick: 2, one shared with the crease sweep) and frame; every
+    figure finite; the frames agree on the plane."""
+    if "## Tangent-free relief" not in text:
+        fail("no derivative study in the results")
+    lines = [line.split("|")[1:-1] for line in text.splitlines() if line.startswith("| ")]
+    accuracy = [cells for cells in lines if len(cells) == 10
+                and cells[2].strip() in DERIVATIVE_FRAMES]
+    if len(accuracy) != 2 * 3 * 2:
+        fail("the derivative study has %d accuracy rows, not 12" % len(accuracy))
+    for cells in accuracy:
+        for cell in cells[3:]:
+            figure(cell.strip())
+        if cells[0].strip() == "plane" and cells[2].strip() == "derivative":
+            if figure(cells[8].strip()) != 0.0:
+                fail("the derivative frame differs from the tangent frame on the plane")
+    seams = [cells for cells in lines if len(cells) == 6 and cells[1].strip() in SEAM_FRAMES]
+    if len(seams) != (3 + 2) * len(SEAM_FRAMES):
+        fail("the derivative study has %d seam rows, not 20" % len(seams))
+    for cells in seams:
+        for cell in cells[2:]:
+            figure(cell.strip())
+
+
 def check_chart(path):
     if not os.path.isfile(path):
         fail("no chart at " + path)
@@ -105,7 +135,7 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric",
+               "accuracy,sweeps,quadric,derivative",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -132,6 +162,7 @@ def main():
     for sweep in SWEEPS:
         check_sweep(text, sweep)
     check_quadric(text)
+    check_derivative(text)
     for chart in CHARTS:
         check_chart(os.path.join(arguments.output, "images", chart))
     print("bench smoke run: results and charts well formed")

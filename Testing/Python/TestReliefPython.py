@@ -18,12 +18,14 @@ from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkFiltersTexture import vtkTextureMapToSphere
 from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
                                          vtkWindowToImageFilter)
 
 import vtkrelief
 from vtkrelief import (vtkConeStepMapFilter, vtkLocalQuadricFilter, vtkMaximumMipmapFilter,
-                       vtkOpenGLQuadricReliefMapper, vtkOpenGLReliefMapper,
+                       vtkOpenGLDerivativeReliefMapper, vtkOpenGLQuadricReliefMapper,
+                       vtkOpenGLReliefMapper, vtkReliefSurfaceFilter,
                        vtkOpenImageIOReader, vtkReliefDisplacementFilter,
                        vtkReliefTangentFrameFilter, vtkReliefTextureFilter,
                        vtkSafetyRadiusFilter)
@@ -58,7 +60,8 @@ class TestReliefPython(unittest.TestCase):
         for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
                     vtkReliefTangentFrameFilter, vtkMaximumMipmapFilter,
                     vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkReliefDisplacementFilter,
-                    vtkLocalQuadricFilter, vtkOpenGLQuadricReliefMapper):
+                    vtkLocalQuadricFilter, vtkOpenGLQuadricReliefMapper,
+                    vtkOpenGLDerivativeReliefMapper, vtkReliefSurfaceFilter):
             self.assertIs(getattr(vtkrelief, cls.__name__), cls)
             self.assertEqual(cls().GetClassName(), cls.__name__)
 
@@ -300,6 +303,54 @@ class TestSampleCountRender(unittest.TestCase):
         self.assertEqual(cones.GetOutput().GetNumberOfScalarComponents(), 2)
         self.assertLess(samples.mean(), exact_mean)
         self.mapper.SetAccelerationConnection(None)
+
+
+class TestDerivativeRender(unittest.TestCase):
+    """Tangent-free relief on a PLY file read in a pipeline, read back in sample counts."""
+
+    def test_ply_without_normals_in_a_pipeline(self):
+        reader = vtkPLYReader()
+        reader.SetFileName(os.path.join(ARGUMENTS.data, "icosahedron.ply"))
+        mapper = vtkOpenGLDerivativeReliefMapper()
+        mapper.SetInputConnection(reader.GetOutputPort())
+        mapper.SetHeightMapData(read_image("stones_height.png"))
+        mapper.SetDepthScale(0.03)
+        mapper.SetDisplayModeToSampleCount()
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        renderer = vtkRenderer()
+        renderer.AddActor(actor)
+        renderer.SetBackground(0.0, 0.0, 1.0)
+        renderer.GetActiveCamera().Elevation(30)
+        renderer.ResetCamera()
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetMultiSamples(0)
+        window.SetSize(160, 120)
+        window.AddRenderer(renderer)
+        errors = MessageRecorder(mapper, vtkCommand.ErrorEvent)
+
+        def relief_pixels():
+            window.Render()
+            grab = vtkWindowToImageFilter()
+            grab.SetInput(window)
+            grab.Update()
+            pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+            covered = pixels[pixels[:, 2] == 0]
+            return covered[:, 0]
+
+        samples = relief_pixels()
+        self.assertGreater(len(samples), 2000)
+        self.assertTrue((samples > 0).all(), "every face is searched")
+        surface = mapper.GetReliefSurface().GetPointData()
+        self.assertIsNone(surface.GetTangents())
+        self.assertIsNone(surface.GetNormals())
+        self.assertFalse(mapper.GetComputeNormals())
+        mapper.ComputeNormalsOn()
+        self.assertTrue((relief_pixels() > 0).all())
+        self.assertIsNotNone(mapper.GetReliefSurface().GetPointData().GetNormals())
+        self.assertEqual(errors.messages, [])
+        window.Finalize()
 
 
 if __name__ == "__main__":

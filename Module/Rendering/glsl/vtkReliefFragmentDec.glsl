@@ -43,11 +43,12 @@ float reliefLevel(vec2 texels)
   return 0.5 * log2(max(dot(alongX, alongX), dot(alongY, alongY)));
 }
 
-// A texture read at a point of the view ray, filtered as at its entry point.
-vec4 reliefTextureAtRay(sampler2D sampler, vec2 uv)
-{
-  return textureLod(sampler, uv, reliefLevel(vec2(textureSize(sampler, 0))));
-}
+// A texture read at a point of the view ray, filtered as at its entry point: once a
+// fragment (colours, normals), so through textureGrad, which costs nothing here. Mesa's
+// llvmpipe reads an 8-bit colour texture at about twice the coordinates where an
+// explicit level (textureLod) differs between the fragments it shades together: a
+// two-pixel column of wrong colour wherever the level crosses a whole number.
+#define reliefTextureAtRay(sampler, uv) textureGrad(sampler, uv, reliefGradX, reliefGradY)
 
 #define RELIEF_DEPTH(uv) textureLod(reliefDepthTexture, uv, reliefLod).r
 #define RELIEF_DEPTH_SIZE reliefTextureSize
@@ -92,15 +93,13 @@ uniform vec2 reliefConeRange; // vtkConeStepMapFilter's maximum ratio and RATIO_
 vec2 reliefDepthGradient(vec2 uv)
 {
 #ifdef RELIEF_INPUT_NORMALS
-  vec2 normalXY = textureLod(reliefNormalTexture, uv, reliefLod).xy;
+  vec2 normalXY = reliefTextureAtRay(reliefNormalTexture, uv).xy;
   float normalZ = sqrt(max(1.0 - dot(normalXY, normalXY), 0.0));
   return normalXY / (max(normalZ, 1e-4) * reliefNormalRatio) * reliefTextureSize;
 #else
   vec2 texel = exp2(max(reliefLod, 0.0)) / reliefTextureSize;
-  float alongU = textureLod(reliefDepthTexture, uv + vec2(texel.x, 0.0), reliefLod).r -
-    textureLod(reliefDepthTexture, uv - vec2(texel.x, 0.0), reliefLod).r;
-  float alongV = textureLod(reliefDepthTexture, uv + vec2(0.0, texel.y), reliefLod).r -
-    textureLod(reliefDepthTexture, uv - vec2(0.0, texel.y), reliefLod).r;
+  float alongU = RELIEF_DEPTH(uv + vec2(texel.x, 0.0)) - RELIEF_DEPTH(uv - vec2(texel.x, 0.0));
+  float alongV = RELIEF_DEPTH(uv + vec2(0.0, texel.y)) - RELIEF_DEPTH(uv - vec2(0.0, texel.y));
   return 0.5 * vec2(alongU / texel.x, alongV / texel.y);
 #endif
 }
