@@ -324,9 +324,9 @@ int main(int argc, char* argv[])
                    "depth scale sweep, the quadric frame's silhouettes on curved shapes, and\n"
                    "the derivative frame against the tangent frame, with its seams at creases.\n"
                    "--report writes the timing tables, --results the accuracy study, the\n"
-                   "sweeps, the quadric and derivative studies with their charts (PNG, in images/ beside\n"
-                   "FILE.md), each with machine and versions. --quick: small sizes and few\n"
-                   "frames, a smoke run.\n";
+                   "sweeps, the quadric and derivative studies with their charts (PNG, in\n"
+                   "images/ beside FILE.md), each with machine and versions. --quick: small\n"
+                   "sizes and few frames, a smoke run.\n";
       return std::strcmp(argv[i], "--help") ? 2 : 0;
     }
   }

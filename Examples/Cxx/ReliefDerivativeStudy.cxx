@@ -537,24 +537,29 @@ std::vector<Seam> MeasureSeams(const Options& options)
       seams.push_back(seam);
     }
   }
+  // by crease, then view: each sweep's rows and lines in order, frames as listed
+  std::stable_sort(seams.begin(), seams.end(), [](const Seam& a, const Seam& b) {
+    return a.Crease < b.Crease || (a.Crease == b.Crease && a.View < b.View);
+  });
   return seams;
 }
 }
 
 namespace
 {
-// One line per seam frame (and the flat lines' largest jump of all frames, the relief's
-// own change): `measure` against the crease or the view angle, over the rows of one sweep.
+// One line per seam frame, and the jumps halfway between folds (the relief's own change
+// over the same pixels) of the frames with split or no normals and of those with smooth
+// ones: the jump at the folds against the crease or the view angle, over one sweep; log
+// scale, the jumps spanning two orders.
 void DrawSeamChart(const std::vector<ReliefDerivativeStudy::Seam>& seams, bool byCrease,
   double fixed, bool colour, const std::string& title, const std::string& file)
 {
   using ReliefDerivativeStudy::Seam;
+  const std::vector<std::string>& frames = ReliefDerivativeStudy::SeamFrames();
+  auto isFlat = [&](const std::string& frame) { return frame == frames[1] || frame == frames[3]; };
   std::vector<ReliefChart::Series> series;
-  ReliefChart::Series flat{ "halfway between folds (no fold), every frame" };
-  flat.Line = true;
-  flat.Black = true;
-  std::map<double, double> flatLargest;
-  for (const std::string& frame : ReliefDerivativeStudy::SeamFrames())
+  std::map<double, double> between[2]; // smooth frames, flat frames
+  for (const std::string& frame : frames)
   {
     ReliefChart::Series line{ frame };
     line.Line = true;
@@ -566,24 +571,33 @@ void DrawSeamChart(const std::vector<ReliefDerivativeStudy::Seam>& seams, bool b
       }
       const double x = byCrease ? seam.Crease : seam.View;
       line.X.push_back(x);
-      line.Y.push_back(colour ? seam.ColourJump : seam.DepthJump);
-      double& largest = flatLargest[x];
+      // a log axis has no zero
+      line.Y.push_back(std::max(colour ? seam.ColourJump : seam.DepthJump, 1e-3));
+      double& largest = between[isFlat(frame) ? 1 : 0][x];
       largest = std::max(largest, colour ? seam.FlatColourJump : seam.FlatDepthJump);
     }
     series.push_back(line);
   }
-  for (const auto& [x, y] : flatLargest)
+  const char* names[2] = { "halfway between folds, smooth normals",
+    "halfway between folds, split or no normals" };
+  for (int kind = 0; kind < 2; ++kind)
   {
-    flat.X.push_back(x);
-    flat.Y.push_back(y);
+    ReliefChart::Series line{ names[kind] };
+    line.Line = true;
+    for (const auto& [x, y] : between[kind])
+    {
+      line.X.push_back(x);
+      line.Y.push_back(std::max(y, 1e-3));
+    }
+    series.push_back(line);
   }
-  series.push_back(flat);
   ReliefChart::Axes axes;
   axes.Title = title;
   axes.X = byCrease ? "crease angle between neighbouring panels (degrees)"
                     : "view angle from the sheet's mean normal (degrees)";
-  axes.Y = colour ? "largest colour jump across a fold (8-bit levels of a u, v ramp)"
-                  : "largest depth jump across a fold (x DepthScale)";
+  axes.Y = colour ? "largest colour jump (8-bit levels of a u, v ramp)"
+                  : "largest depth jump (x DepthScale)";
+  axes.LogY = true;
   ReliefChart::Write(series, axes, file);
 }
 

@@ -22,7 +22,7 @@
  *   and the texture no longer tears there.
  * - Without normals the frame is the face's: flat shading, and the relief tears at each
  *   edge by an amount that grows with the crease angle and the depth (the seed's
- *   "faceted crystal"; Documentation/derivative.md measures it). ComputeNormalsOn()
+ *   "faceted crystal"; Documentation/results.md measures it). ComputeNormalsOn()
  *   gives such a mesh smooth point normals instead, and with them the smooth frame.
  *
  * Where the derivatives hold no mapping (texture coordinates constant or collinear over

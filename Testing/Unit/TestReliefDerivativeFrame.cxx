@@ -30,8 +30,9 @@ struct Triangle
   vec3 GradV;
   vec3 AlongX;
   vec3 AlongY;
-  vec2 UVAlongX() const { return vec2(dot(this->GradU, this->AlongX), dot(this->GradV, this->AlongX)); }
-  vec2 UVAlongY() const { return vec2(dot(this->GradU, this->AlongY), dot(this->GradV, this->AlongY)); }
+  vec2 UVAlongX() const { return this->UVAlong(this->AlongX); }
+  vec2 UVAlongY() const { return this->UVAlong(this->AlongY); }
+  vec2 UVAlong(vec3 step) const { return vec2(dot(this->GradU, step), dot(this->GradV, step)); }
 };
 
 vec3 RandomUnit(std::mt19937& random)
