@@ -8,6 +8,8 @@
 #ifndef ReliefDerivativeStudy_h
 #define ReliefDerivativeStudy_h
 
+#include "vtkOpenGLReliefMapper.h"
+
 #include <string>
 #include <vector>
 
@@ -26,6 +28,8 @@ struct Options
   double SweepCrease = 20.0;  ///< the crease of the view-angle sweep
   double SweepView = 45.0;    ///< the view angle of the crease sweep
   std::string ImageDirectory; ///< where the charts go (PNG); none when empty
+  int SearchMethod = vtkOpenGLReliefMapper::LINEAR_BINARY; ///< the accuracy study's
+  bool TorusToo = true;       ///< the accuracy study on the torus besides the plane
 };
 
 /// One frame on one shape from one view, against the truth.

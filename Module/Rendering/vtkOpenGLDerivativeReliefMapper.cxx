@@ -12,51 +12,57 @@ vtkStandardNewMacro(vtkOpenGLDerivativeReliefMapper);
 
 vtkOpenGLDerivativeReliefMapper::vtkOpenGLDerivativeReliefMapper()
 {
-  vtkReliefForwardMessages(this->Surface, this);
-  vtkReliefForwardMessages(this->Normals, this);
-  this->Normals->SetInputConnection(this->Surface->GetOutputPort());
-  this->Normals->SplittingOff();
-  this->Normals->ComputeCellNormalsOff();
+  vtkReliefForwardMessages(this->SurfaceFilter, this);
+  vtkReliefForwardMessages(this->NormalsFilter, this);
+  this->NormalsFilter->SetInputConnection(this->SurfaceFilter->GetOutputPort());
+  this->NormalsFilter->SplittingOff();
+  this->NormalsFilter->ComputeCellNormalsOff();
 }
 
 vtkOpenGLDerivativeReliefMapper::~vtkOpenGLDerivativeReliefMapper() = default;
 
 vtkPolyData* vtkOpenGLDerivativeReliefMapper::GetReliefSurface()
 {
-  vtkPolyData* surface = this->Surface->GetOutput();
-  const bool computed = this->ComputeNormals && !surface->GetPointData()->GetNormals();
-  return computed ? this->Normals->GetOutput() : surface;
-}
-
-void vtkOpenGLDerivativeReliefMapper::SetComputeNormals(bool compute)
-{
-  if (compute != this->ComputeNormals)
-  {
-    this->ComputeNormals = compute;
-    this->Modified();
-  }
+  return this->DrawnSurface ? this->DrawnSurface.Get() : this->SurfaceFilter->GetOutput();
 }
 
 bool vtkOpenGLDerivativeReliefMapper::UpdateReliefSurface()
 {
-  this->Surface->SetInputData(this->CurrentInput);
-  this->Surface->Update();
-  if (!this->Surface->GetHasSurface())
+  this->SurfaceFilter->SetInputData(this->CurrentInput);
+  this->SurfaceFilter->Update();
+  if (!this->SurfaceFilter->GetHasSurface())
   {
     return false; // the filter has said why, once per change of the mesh
   }
-  this->CurrentInput = this->GetReliefSurface();
-  if (this->CurrentInput == this->Normals->GetOutput())
+  vtkPolyData* surface = this->SurfaceFilter->GetOutput();
+  this->DrawnSurface = surface;
+  if (this->ComputeNormals && !surface->GetPointData()->GetNormals())
   {
-    this->Normals->Update(); // once per change of the mesh
+    this->DrawnSurface = this->WithComputedNormals(surface);
   }
+  this->CurrentInput = this->DrawnSurface;
   const bool vertexNormals = this->CurrentInput->GetPointData()->GetNormals() != nullptr;
-  if (vertexNormals != this->VertexNormals)
+  if (vertexNormals != this->HasVertexNormals)
   {
-    this->VertexNormals = vertexNormals;
+    this->HasVertexNormals = vertexNormals;
     this->ShaderOptionsTime.Modified();
   }
   return true;
+}
+
+vtkPolyData* vtkOpenGLDerivativeReliefMapper::WithComputedNormals(vtkPolyData* surface)
+{
+  // vtkPolyDataNormals orders the windings consistently to average across edges; only
+  // its normals are taken, so the triangles drawn (and culled) stay the mesh's own
+  this->NormalsFilter->Update(); // runs once per change of the mesh
+  vtkPolyData* normals = this->NormalsFilter->GetOutput();
+  if (this->NormalsSurface->GetMTime() < normals->GetMTime() ||
+    this->NormalsSurface->GetMTime() < surface->GetMTime())
+  {
+    this->NormalsSurface->ShallowCopy(surface);
+    this->NormalsSurface->GetPointData()->SetNormals(normals->GetPointData()->GetNormals());
+  }
+  return this->NormalsSurface;
 }
 
 void vtkOpenGLDerivativeReliefMapper::MapReliefAttributes(bool relief)
@@ -64,7 +70,7 @@ void vtkOpenGLDerivativeReliefMapper::MapReliefAttributes(bool relief)
   vtkPointData* pointData = this->CurrentInput->GetPointData();
   this->MapReliefAttribute(TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr);
   this->MapReliefAttribute(NormalAttribute,
-    relief && this->VertexNormals ? pointData->GetNormals()->GetName() : nullptr);
+    relief && this->HasVertexNormals ? pointData->GetNormals()->GetName() : nullptr);
   // the tangent frame's inputs stay unbound: this frame never reads them
   this->MapReliefAttribute(TangentAttribute, nullptr);
   this->MapReliefAttribute(TextureScaleAttribute, nullptr);
@@ -72,15 +78,18 @@ void vtkOpenGLDerivativeReliefMapper::MapReliefAttributes(bool relief)
 
 std::string vtkOpenGLDerivativeReliefMapper::GetFrameDefines()
 {
-  return this->VertexNormals ? "#define RELIEF_DERIVATIVE_FRAME\n#define RELIEF_VERTEX_NORMALS\n"
-                             : "#define RELIEF_DERIVATIVE_FRAME\n";
+  return this->HasVertexNormals
+    ? "#define RELIEF_DERIVATIVE_FRAME\n#define RELIEF_VERTEX_NORMALS\n"
+    : "#define RELIEF_DERIVATIVE_FRAME\n";
 }
 
 void vtkOpenGLDerivativeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ComputeNormals: " << this->ComputeNormals << "\n";
-  os << indent << "VertexNormals: " << this->VertexNormals << "\n";
-  os << indent << "Surface:\n";
-  this->Surface->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "HasVertexNormals: " << this->HasVertexNormals << "\n";
+  os << indent << "SurfaceFilter:\n";
+  this->SurfaceFilter->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "NormalsFilter:\n";
+  this->NormalsFilter->PrintSelf(os, indent.GetNextIndent());
 }

@@ -5,8 +5,9 @@
  * Derivative-based relief mapping (seed 003, Hoffman 2012): each fragment builds its
  * texture-space frame from the screen-space derivatives of its view-space position and
  * texture coordinates (dFdx, dFdy), so meshes that carry no tangents, such as PLY scans
- * and OBJ or STL exports, get relief without any per-vertex frame. Nothing is computed
- * per vertex: the mesh is only triangulated (vtkReliefSurfaceFilter).
+ * and OBJ or STL exports, get relief without any per-vertex frame. The mesh is only
+ * triangulated (vtkReliefSurfaceFilter); nothing is computed per vertex unless
+ * ComputeNormals asks for normals.
  *
  * The frame is the triangle's own affine texture mapping: the gradients of u and v
  * solved exactly from the derivatives, whatever the skew of the texture coordinates
@@ -32,8 +33,10 @@
 #ifndef vtkOpenGLDerivativeReliefMapper_h
 #define vtkOpenGLDerivativeReliefMapper_h
 
+#include "vtkNew.h"                  // For the filters
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkReliefRenderingModule.h" // For export macro
+#include "vtkSmartPointer.h"          // For DrawnSurface
 
 class vtkPolyDataNormals;
 class vtkReliefSurfaceFilter;
@@ -45,7 +48,10 @@ public:
   vtkTypeMacro(vtkOpenGLDerivativeReliefMapper, vtkOpenGLReliefMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The mesh as rendered: triangulated, with its texture coordinates and normals, if any.
+  /**
+   * The mesh as last rendered: triangulated, with its texture coordinates and normals,
+   * if any (computed ones with ComputeNormals); the triangulated mesh before a render.
+   */
   vtkPolyData* GetReliefSurface() override;
 
   ///@{
@@ -53,10 +59,10 @@ public:
    * For a mesh without point normals: off (default), each face's own frame, flat
    * shading and tearing at the edges; on, smooth point normals computed once per change
    * of the mesh (vtkPolyDataNormals, edges never split), the smooth frame and no
-   * tearing where faces share points. A mesh's own normals are used either way.
-   * Changing it rebuilds the shader.
+   * tearing where faces share points. A mesh's own normals are used either way. The
+   * triangles drawn keep their own windings.
    */
-  void SetComputeNormals(bool compute);
+  vtkSetMacro(ComputeNormals, bool);
   vtkGetMacro(ComputeNormals, bool);
   vtkBooleanMacro(ComputeNormals, bool);
   ///@}
@@ -69,10 +75,15 @@ protected:
   void MapReliefAttributes(bool relief) override;
   std::string GetFrameDefines() override;
 
-  vtkNew<vtkReliefSurfaceFilter> Surface;
-  vtkNew<vtkPolyDataNormals> Normals; // for ComputeNormals
+  /// `surface` with smooth point normals added (NormalsSurface), its cells untouched.
+  vtkPolyData* WithComputedNormals(vtkPolyData* surface);
+
+  vtkNew<vtkReliefSurfaceFilter> SurfaceFilter;
+  vtkNew<vtkPolyDataNormals> NormalsFilter; // for ComputeNormals
+  vtkNew<vtkPolyData> NormalsSurface;       // the surface with the computed normals
+  vtkSmartPointer<vtkPolyData> DrawnSurface;
   bool ComputeNormals = false;
-  bool VertexNormals = false; // the surface has point normals: smooth frame
+  bool HasVertexNormals = false; // the drawn surface has point normals: smooth frame
 
 private:
   vtkOpenGLDerivativeReliefMapper(const vtkOpenGLDerivativeReliefMapper&) = delete;

@@ -162,8 +162,9 @@ void CollinearTextureCoordinates()
 
 void ZeroAreaTriangles()
 {
-  // every point of the left half moved onto the middle line: its triangles have no area,
-  // and the triangles that span the middle line stay
+  // every point of the left half moved onto the middle line: its triangles have no area
+  // and are never rasterized (no fragment, so no frame to fail); the triangles that span
+  // the middle line and the right half keep their relief, silently
   auto grid = Grid();
   ChangeLeftHalf(grid, [&](vtkIdType id, const double* point) {
     grid->GetPoints()->SetPoint(id, 0.0, point[1], point[2]);

@@ -18,6 +18,8 @@ from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkFiltersTexture import vtkTextureMapToSphere
 from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkFiltersGeneral import vtkPassSelectedArrays
+from vtkmodules.vtkIOGeometry import vtkOBJReader
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
                                          vtkWindowToImageFilter)
@@ -306,16 +308,13 @@ class TestSampleCountRender(unittest.TestCase):
 
 
 class TestDerivativeRender(unittest.TestCase):
-    """Tangent-free relief on a PLY file read in a pipeline, read back in sample counts."""
+    """Tangent-free relief on files read in a pipeline, read back from the window."""
 
-    def test_ply_without_normals_in_a_pipeline(self):
-        reader = vtkPLYReader()
-        reader.SetFileName(os.path.join(ARGUMENTS.data, "icosahedron.ply"))
-        mapper = vtkOpenGLDerivativeReliefMapper()
-        mapper.SetInputConnection(reader.GetOutputPort())
+    def render(self, mapper, sample_count):
         mapper.SetHeightMapData(read_image("stones_height.png"))
         mapper.SetDepthScale(0.03)
-        mapper.SetDisplayModeToSampleCount()
+        if sample_count:
+            mapper.SetDisplayModeToSampleCount()
         actor = vtkActor()
         actor.SetMapper(mapper)
         renderer = vtkRenderer()
@@ -328,29 +327,52 @@ class TestDerivativeRender(unittest.TestCase):
         window.SetMultiSamples(0)
         window.SetSize(160, 120)
         window.AddRenderer(renderer)
-        errors = MessageRecorder(mapper, vtkCommand.ErrorEvent)
+        self.addCleanup(window.Finalize)
 
-        def relief_pixels():
+        def pixels():
             window.Render()
             grab = vtkWindowToImageFilter()
             grab.SetInput(window)
             grab.Update()
-            pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-            covered = pixels[pixels[:, 2] == 0]
-            return covered[:, 0]
+            return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+        return pixels
 
-        samples = relief_pixels()
+    def test_ply_without_normals_in_a_pipeline(self):
+        reader = vtkPLYReader()
+        reader.SetFileName(os.path.join(ARGUMENTS.data, "icosahedron.ply"))
+        mapper = vtkOpenGLDerivativeReliefMapper()
+        mapper.SetInputConnection(reader.GetOutputPort())
+        errors = MessageRecorder(mapper, vtkCommand.ErrorEvent)
+        pixels = self.render(mapper, sample_count=True)()
+        samples = pixels[pixels[:, 2] == 0][:, 0]
         self.assertGreater(len(samples), 2000)
         self.assertTrue((samples > 0).all(), "every face is searched")
         surface = mapper.GetReliefSurface().GetPointData()
         self.assertIsNone(surface.GetTangents())
         self.assertIsNone(surface.GetNormals())
-        self.assertFalse(mapper.GetComputeNormals())
-        mapper.ComputeNormalsOn()
-        self.assertTrue((relief_pixels() > 0).all())
-        self.assertIsNotNone(mapper.GetReliefSurface().GetPointData().GetNormals())
         self.assertEqual(errors.messages, [])
-        window.Finalize()
+
+    def test_compute_normals_smooths_a_mesh_without_them(self):
+        reader = vtkOBJReader()
+        reader.SetFileName(os.path.join(ARGUMENTS.data, "torus.obj"))
+        strip = vtkPassSelectedArrays()  # the file's normals left out, its points kept
+        strip.SetInputConnection(reader.GetOutputPort())
+        strip.GetPointDataArraySelection().EnableArray("TCoords")
+        mapper = vtkOpenGLDerivativeReliefMapper()
+        mapper.SetInputConnection(strip.GetOutputPort())
+        pixels = self.render(mapper, sample_count=False)
+        flat = pixels()
+        self.assertIsNone(mapper.GetReliefSurface().GetPointData().GetNormals())
+        mapper.ComputeNormalsOn()
+        smooth = pixels()
+        self.assertIsNotNone(mapper.GetReliefSurface().GetPointData().GetNormals())
+        # the same triangles drawn, shaded smoothly instead of facet by facet
+        def covered(image):
+            return (image != [0, 0, 255]).any(axis=1)
+        self.assertTrue((covered(flat) == covered(smooth)).all())
+        self.assertGreater(numpy.abs(flat - smooth)[covered(flat)].mean(), 2.0)
+        mapper.ComputeNormalsOff()
+        self.assertTrue((pixels() == flat).all(), "off again: the flat frame again")
 
 
 if __name__ == "__main__":

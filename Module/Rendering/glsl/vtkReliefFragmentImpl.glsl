@@ -15,16 +15,19 @@
   reliefFaceN = dot(reliefFaceN, reliefViewVC) > 0.0 ? -reliefFaceN : reliefFaceN;
   reliefFrameN = reliefUnitOr(reliefFaceN, -reliefViewVC);
 #ifdef RELIEF_VERTEX_NORMALS
-  // smooth: depth along the interpolated normal, turned to the face's visible side
+  // smooth: depth along the interpolated normal, turned to the face's visible side;
+  // near an outline it may still face away from the viewer, and no ray can go in along
+  // it: the face's normal then
   vec3 reliefVertexN = reliefUnitOr(reliefNormalVSOutput, reliefFrameN);
-  reliefFrameN = dot(reliefVertexN, reliefFaceN) < 0.0 ? -reliefVertexN : reliefVertexN;
+  reliefVertexN = dot(reliefVertexN, reliefFaceN) < 0.0 ? -reliefVertexN : reliefVertexN;
+  reliefFrameN = dot(reliefVertexN, reliefViewVC) < -1e-3 ? reliefVertexN : reliefFrameN;
 #endif
   ReliefAxes reliefAxes = reliefDerivativeAxes(
     reliefAlongX, reliefAlongY, reliefGradX, reliefGradY, reliefFrameN);
   reliefAxisU = reliefAxes.u;
   reliefAxisV = reliefAxes.v;
   reliefFrameUsable = reliefAxes.usable;
-#else
+#elif defined(RELIEF_TANGENT_FRAME)
   reliefFrameN = normalize(reliefNormalVSOutput);
   vec3 reliefFrameT = normalize(
     reliefTangentVSOutput - reliefFrameN * dot(reliefFrameN, reliefTangentVSOutput));
@@ -37,6 +40,11 @@
   if (abs(reliefScale.y) < 1e-20) { reliefScale.y = 1e-20; }
   reliefAxisU = reliefFrameT / reliefScale.x;
   reliefAxisV = reliefFrameB / reliefScale.y;
+#else
+#error "a relief frame: define RELIEF_TANGENT_FRAME or RELIEF_DERIVATIVE_FRAME"
+#endif
+#if defined(RELIEF_QUADRIC) && !defined(RELIEF_TANGENT_FRAME)
+#error "the quadric frame builds on the tangent frame: define RELIEF_TANGENT_FRAME too"
 #endif
 
   // search; the hit's distance along the view ray (world units), and the tilt of the
