@@ -9,7 +9,6 @@
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLDerivativeReliefMapper.h"
 #include "vtkPointData.h"
@@ -42,13 +41,6 @@ using namespace glm;
 }
 
 constexpr double Pi = 3.14159265358979323846;
-
-vtkSmartPointer<vtkActor> ActorOf(vtkMapper* mapper)
-{
-  auto actor = ReliefScene::ReliefActor(mapper, "");
-  actor->GetProperty()->BackfaceCullingOn(); // the torus is closed; the plane faces the camera
-  return actor;
-}
 
 void SetSearch(vtkOpenGLReliefMapper* mapper, vtkPolyData* surface, vtkImageData* heights,
   double depthScale, int method = vtkOpenGLReliefMapper::LINEAR_BINARY)
@@ -342,12 +334,9 @@ const std::vector<std::string>& SeamFrames()
 
 std::vector<Accuracy> MeasureAccuracy(const Options& options)
 {
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-  resize->SetOutputDimensions(options.HeightMapSize, options.HeightMapSize, 1);
-  resize->Update();
+  auto heights = ReliefScene::ResizedHeightMap("stones_height.png", options.HeightMapSize);
   vtkNew<vtkReliefTextureFilter> relief;
-  relief->SetInputConnection(resize->GetOutputPort());
+  relief->SetInputData(heights);
   relief->Update();
 
   vtkNew<vtkRenderWindow> window;
@@ -370,36 +359,21 @@ std::vector<Accuracy> MeasureAccuracy(const Options& options)
     for (vtkOpenGLReliefMapper* mapper : mappers)
     {
       SetSearch(
-        mapper, shape.Coarse, resize->GetOutput(), options.DepthScale, options.SearchMethod);
+        mapper, shape.Coarse, heights, options.DepthScale, options.SearchMethod);
     }
-    const vtkSmartPointer<vtkActor> actors[] = { ActorOf(truthMapper), ActorOf(tangent),
-      ActorOf(derivative) };
-    renderer->RemoveAllViewProps();
-    for (vtkActor* actor : actors)
-    {
-      renderer->AddActor(actor);
-    }
-    auto show = [&](vtkActor* shown) {
-      for (vtkActor* actor : actors)
-      {
-        actor->SetVisibility(actor == shown);
-      }
-    };
-    auto capture = [&](vtkActor* shown) {
-      show(shown);
-      window->Render();
-      return ReliefScene::Capture(window, renderer);
-    };
+    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::CulledActor(truthMapper), ReliefScene::CulledActor(tangent),
+      ReliefScene::CulledActor(derivative) };
+    ReliefScene::Lineup lineup(window, renderer, actors);
     for (const auto& [viewName, aim] : shape.Views)
     {
       aim(renderer);
       renderer->ResetCameraClippingRange(truthMesh->GetBounds());
-      const ReliefMetrics::Capture truth = capture(actors[0]);
+      const ReliefMetrics::Capture truth = lineup.Capture(actors[0]);
       std::vector<ReliefMetrics::Capture> frames;
       std::vector<std::vector<double>> milliseconds(2);
       for (size_t f = 0; f < 2; ++f)
       {
-        frames.push_back(capture(actors[1 + f]));
+        frames.push_back(lineup.Capture(actors[1 + f]));
         Accuracy row;
         row.Shape = shape.Name;
         row.View = viewName;
@@ -422,7 +396,7 @@ std::vector<Accuracy> MeasureAccuracy(const Options& options)
       {
         for (size_t f = 0; f < 2; ++f)
         {
-          show(actors[1 + f]);
+          lineup.Show(actors[1 + f]);
           const std::vector<double> timed =
             ReliefScene::FrameMilliseconds(window, 2, options.Frames);
           milliseconds[f].insert(milliseconds[f].end(), timed.begin(), timed.end());

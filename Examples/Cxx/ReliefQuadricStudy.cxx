@@ -7,7 +7,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkPolyData.h"
@@ -46,15 +45,6 @@ const Shape Shapes[] = {
 };
 const double Views[][2] = { { 0.0, 10.0 }, { 35.0, 30.0 }, { 70.0, -20.0 } }; // azimuth, elevation
 
-vtkSmartPointer<vtkActor> ActorOf(vtkMapper* mapper)
-{
-  auto actor = ReliefScene::ReliefActor(mapper, "");
-  // closed shapes (and the cylinder, whose inside the views never show): what lies
-  // behind a silhouette is the background, never the far side's inner faces
-  actor->GetProperty()->BackfaceCullingOn();
-  return actor;
-}
-
 void Aim(vtkRenderer* renderer, const double view[2], const double frame[6], vtkPolyData* truth)
 {
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -81,11 +71,9 @@ const std::vector<std::string>& Frames()
 
 std::vector<Measurement> Measure(const Options& options)
 {
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-  resize->SetOutputDimensions(options.HeightMapSize, options.HeightMapSize, 1);
+  auto heights = ReliefScene::ResizedHeightMap("stones_height.png", options.HeightMapSize);
   vtkNew<vtkReliefTextureFilter> relief;
-  relief->SetInputConnection(resize->GetOutputPort());
+  relief->SetInputData(heights);
   relief->Update();
 
   vtkNew<vtkRenderWindow> window;
@@ -109,39 +97,24 @@ std::vector<Measurement> Measure(const Options& options)
     for (vtkOpenGLReliefMapper* mapper : mappers)
     {
       mapper->SetInputData(coarse);
-      mapper->SetHeightMapConnection(resize->GetOutputPort());
+      mapper->SetHeightMapData(heights);
       mapper->SetDepthScale(options.DepthScale);
       mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
       mapper->SetLinearSteps(32);
       mapper->SetBinarySteps(6);
     }
-    const vtkSmartPointer<vtkActor> actors[] = { ActorOf(truthMapper), ActorOf(polygonMapper),
-      ActorOf(flat), ActorOf(approximate), ActorOf(exact) };
-    renderer->RemoveAllViewProps();
-    for (vtkActor* actor : actors)
-    {
-      renderer->AddActor(actor);
-    }
-    auto show = [&](vtkActor* shown) {
-      for (vtkActor* actor : actors)
-      {
-        actor->SetVisibility(actor == shown);
-      }
-    };
-    auto capture = [&](vtkActor* shown) {
-      show(shown);
-      window->Render();
-      return ReliefScene::Capture(window, renderer);
-    };
+    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::CulledActor(truthMapper), ReliefScene::CulledActor(polygonMapper),
+      ReliefScene::CulledActor(flat), ReliefScene::CulledActor(approximate), ReliefScene::CulledActor(exact) };
+    ReliefScene::Lineup lineup(window, renderer, actors);
     for (const auto& view : Views)
     {
       Aim(renderer, view, shape.Frame, truthMesh);
-      const ReliefMetrics::Capture truth = capture(actors[0]);
-      const ReliefMetrics::Capture polygons = capture(actors[1]);
+      const ReliefMetrics::Capture truth = lineup.Capture(actors[0]);
+      const ReliefMetrics::Capture polygons = lineup.Capture(actors[1]);
       std::vector<std::vector<double>> milliseconds(3);
       for (size_t f = 0; f < 3; ++f)
       {
-        const ReliefMetrics::Capture frame = capture(actors[2 + f]);
+        const ReliefMetrics::Capture frame = lineup.Capture(actors[2 + f]);
         Measurement measurement;
         measurement.Shape = shape.Name;
         measurement.Azimuth = view[0];
@@ -158,7 +131,7 @@ std::vector<Measurement> Measure(const Options& options)
       {
         for (size_t f = 0; f < 3; ++f)
         {
-          show(actors[2 + f]);
+          lineup.Show(actors[2 + f]);
           const std::vector<double> timed =
             ReliefScene::FrameMilliseconds(window, 2, options.Frames);
           milliseconds[f].insert(milliseconds[f].end(), timed.begin(), timed.end());

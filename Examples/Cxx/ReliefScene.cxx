@@ -7,6 +7,7 @@
 #include "vtkGenericDataObjectReader.h"
 #include "vtkGeometryFilter.h"
 #include "vtkImageData.h"
+#include "vtkImageResize.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -648,6 +649,50 @@ void ShowQuadricShadows(vtkRenderWindow* window, int width, int height)
   auto sphere = Sphere(48);
   ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLReliefMapper>::New(), sphere, 0.0);
   ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New(), sphere, 0.5);
+}
+
+vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size)
+{
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputData(ReadImage(name));
+  resize->SetOutputDimensions(size, size, 1);
+  resize->Update();
+  return resize->GetOutput();
+}
+
+vtkSmartPointer<vtkActor> CulledActor(vtkMapper* mapper)
+{
+  auto actor = ReliefActor(mapper, "");
+  actor->GetProperty()->BackfaceCullingOn();
+  return actor;
+}
+
+Lineup::Lineup(vtkRenderWindow* window, vtkRenderer* renderer,
+  const std::vector<vtkSmartPointer<vtkActor>>& actors)
+  : Window(window)
+  , Renderer(renderer)
+  , Actors(actors)
+{
+  renderer->RemoveAllViewProps();
+  for (vtkActor* actor : actors)
+  {
+    renderer->AddActor(actor);
+  }
+}
+
+void Lineup::Show(vtkActor* shown)
+{
+  for (vtkActor* actor : this->Actors)
+  {
+    actor->SetVisibility(actor == shown);
+  }
+}
+
+ReliefMetrics::Capture Lineup::Capture(vtkActor* shown)
+{
+  this->Show(shown);
+  this->Window->Render();
+  return ReliefScene::Capture(this->Window, this->Renderer);
 }
 
 std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)

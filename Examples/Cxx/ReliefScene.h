@@ -133,6 +133,31 @@ void UseShadowMaps(vtkRenderer* renderer);
 void ShowQuadricShadows(vtkRenderWindow* window, int width, int height);
 ///@}
 
+/// The height map `name` of Data/ resampled to size x size texels (vtkImageResize).
+vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size);
+
+/// An actor with `mapper`, no colour texture, back faces culled: the studies' closed
+/// shapes, where past an outline lies the background, never the far side's inside.
+vtkSmartPointer<vtkActor> CulledActor(vtkMapper* mapper);
+
+/// The actors one study compares, in one renderer (its other props removed), shown one
+/// at a time.
+class Lineup
+{
+public:
+  Lineup(vtkRenderWindow* window, vtkRenderer* renderer,
+    const std::vector<vtkSmartPointer<vtkActor>>& actors);
+  /// Only `shown` visible.
+  void Show(vtkActor* shown);
+  /// Only `shown` visible, rendered, and the window captured.
+  ReliefMetrics::Capture Capture(vtkActor* shown);
+
+private:
+  vtkRenderWindow* Window;
+  vtkRenderer* Renderer;
+  std::vector<vtkSmartPointer<vtkActor>> Actors;
+};
+
 /// Wall-clock milliseconds of each of `frames` renders after `warmup` renders.
 std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames);
 
