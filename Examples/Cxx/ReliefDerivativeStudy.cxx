@@ -370,7 +370,6 @@ std::vector<Accuracy> MeasureAccuracy(const Options& options)
       renderer->ResetCameraClippingRange(truthMesh->GetBounds());
       const ReliefMetrics::Capture truth = lineup.Capture(actors[0]);
       std::vector<ReliefMetrics::Capture> frames;
-      std::vector<std::vector<double>> milliseconds(2);
       for (size_t f = 0; f < 2; ++f)
       {
         frames.push_back(lineup.Capture(actors[1 + f]));
@@ -391,20 +390,14 @@ std::vector<Accuracy> MeasureAccuracy(const Options& options)
         }
         results.push_back(row);
       }
-      // timed in interleaved rounds, so that machine noise hits both alike
-      for (int round = 0; round < options.Rounds && options.Frames > 0; ++round)
+      if (options.Frames > 0)
       {
+        const std::vector<double> medians = lineup.InterleavedMilliseconds(
+          { actors[1], actors[2] }, options.Rounds, options.Frames);
         for (size_t f = 0; f < 2; ++f)
         {
-          lineup.Show(actors[1 + f]);
-          const std::vector<double> timed =
-            ReliefScene::FrameMilliseconds(window, 2, options.Frames);
-          milliseconds[f].insert(milliseconds[f].end(), timed.begin(), timed.end());
+          results[results.size() - 2 + f].Milliseconds = medians[f];
         }
-      }
-      for (size_t f = 0; f < 2 && options.Frames > 0; ++f)
-      {
-        results[results.size() - 2 + f].Milliseconds = ReliefScene::Median(milliseconds[f]);
       }
     }
   }

@@ -111,7 +111,6 @@ std::vector<Measurement> Measure(const Options& options)
       Aim(renderer, view, shape.Frame, truthMesh);
       const ReliefMetrics::Capture truth = lineup.Capture(actors[0]);
       const ReliefMetrics::Capture polygons = lineup.Capture(actors[1]);
-      std::vector<std::vector<double>> milliseconds(3);
       for (size_t f = 0; f < 3; ++f)
       {
         const ReliefMetrics::Capture frame = lineup.Capture(actors[2 + f]);
@@ -126,21 +125,14 @@ std::vector<Measurement> Measure(const Options& options)
         measurement.MeanSamples = ReliefScene::SampleCounts(window, renderer, mappers[f]).Mean;
         measurements.push_back(measurement);
       }
-      // timed in interleaved rounds, so that machine noise hits the three alike
-      for (int round = 0; round < options.Rounds && options.Frames > 0; ++round)
+      if (options.Frames > 0)
       {
+        const std::vector<double> medians = lineup.InterleavedMilliseconds(
+          { actors[2], actors[3], actors[4] }, options.Rounds, options.Frames);
         for (size_t f = 0; f < 3; ++f)
         {
-          lineup.Show(actors[2 + f]);
-          const std::vector<double> timed =
-            ReliefScene::FrameMilliseconds(window, 2, options.Frames);
-          milliseconds[f].insert(milliseconds[f].end(), timed.begin(), timed.end());
+          measurements[measurements.size() - 3 + f].Milliseconds = medians[f];
         }
-      }
-      for (size_t f = 0; f < 3 && options.Frames > 0; ++f)
-      {
-        measurements[measurements.size() - 3 + f].Milliseconds =
-          ReliefScene::Median(milliseconds[f]);
       }
     }
   }

@@ -695,6 +695,27 @@ ReliefMetrics::Capture Lineup::Capture(vtkActor* shown)
   return ReliefScene::Capture(this->Window, this->Renderer);
 }
 
+std::vector<double> Lineup::InterleavedMilliseconds(
+  const std::vector<vtkActor*>& timed, int rounds, int frames)
+{
+  std::vector<std::vector<double>> milliseconds(timed.size());
+  for (int round = 0; round < rounds; ++round)
+  {
+    for (size_t a = 0; a < timed.size(); ++a)
+    {
+      this->Show(timed[a]);
+      const std::vector<double> times = FrameMilliseconds(this->Window, 2, frames);
+      milliseconds[a].insert(milliseconds[a].end(), times.begin(), times.end());
+    }
+  }
+  std::vector<double> medians;
+  for (const std::vector<double>& times : milliseconds)
+  {
+    medians.push_back(Median(times));
+  }
+  return medians;
+}
+
 std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames)
 {
   for (int i = 0; i < warmup; ++i)

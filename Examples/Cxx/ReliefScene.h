@@ -151,6 +151,11 @@ public:
   void Show(vtkActor* shown);
   /// Only `shown` visible, rendered, and the window captured.
   ReliefMetrics::Capture Capture(vtkActor* shown);
+  /// The median ms per frame of each of `timed`, over `rounds` rounds that time each in
+  /// turn for `frames` frames (after 2 warm-up frames), so that machine noise hits all
+  /// alike.
+  std::vector<double> InterleavedMilliseconds(
+    const std::vector<vtkActor*>& timed, int rounds, int frames);
 
 private:
   vtkRenderWindow* Window;
