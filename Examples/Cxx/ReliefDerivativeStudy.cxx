@@ -361,8 +361,8 @@ std::vector<Accuracy> MeasureAccuracy(const Options& options)
       SetSearch(
         mapper, shape.Coarse, heights, options.DepthScale, options.SearchMethod);
     }
-    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::CulledActor(truthMapper), ReliefScene::CulledActor(tangent),
-      ReliefScene::CulledActor(derivative) };
+    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::ReliefActor(truthMapper, ""),
+      ReliefScene::ReliefActor(tangent, ""), ReliefScene::ReliefActor(derivative, "") };
     ReliefScene::Lineup lineup(window, renderer, actors);
     for (const auto& [viewName, aim] : shape.Views)
     {

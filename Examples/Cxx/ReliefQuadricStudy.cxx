@@ -11,7 +11,6 @@
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -103,8 +102,10 @@ std::vector<Measurement> Measure(const Options& options)
       mapper->SetLinearSteps(32);
       mapper->SetBinarySteps(6);
     }
-    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::CulledActor(truthMapper), ReliefScene::CulledActor(polygonMapper),
-      ReliefScene::CulledActor(flat), ReliefScene::CulledActor(approximate), ReliefScene::CulledActor(exact) };
+    // the actors' default properties: the mappers decide which faces carry relief
+    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::ReliefActor(truthMapper, ""),
+      ReliefScene::ReliefActor(polygonMapper, ""), ReliefScene::ReliefActor(flat, ""),
+      ReliefScene::ReliefActor(approximate, ""), ReliefScene::ReliefActor(exact, "") };
     ReliefScene::Lineup lineup(window, renderer, actors);
     for (const auto& view : Views)
     {

@@ -18,7 +18,6 @@
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkProperty.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -113,7 +112,7 @@ void PrintUsage(std::ostream& os)
         "                       surface unnoticed, 0 or more (default: 0, exact)\n"
         "  --no-shadows         turn self-shadowing off\n"
         "  --quadric            curved relief (vtkOpenGLQuadricReliefMapper): the relief\n"
-        "                       carves the outline of a curved mesh; back faces culled\n"
+        "                       carves the outline of a curved mesh\n"
         "  --derivative         tangent-free relief (vtkOpenGLDerivativeReliefMapper):\n"
         "                       the frame from screen-space derivatives; flat shading\n"
         "                       on a mesh without normals\n"
@@ -555,8 +554,6 @@ int main(int argc, char* argv[])
   {
     actor->SetTexture(ColorTexture(colorImage));
   }
-  // past a carved outline lies what is behind the mesh, not the relief of its far side
-  actor->GetProperty()->SetBackfaceCulling(options.Quadric);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);

@@ -347,7 +347,6 @@ void ShowShadowHalf(vtkRenderWindow* window, vtkOpenGLReliefMapper* mapper, vtkP
   ReliefScene::SetStones(mapper, sphere, 0.1);
   vtkNew<vtkActor> sphereActor;
   sphereActor->SetMapper(mapper);
-  sphereActor->GetProperty()->BackfaceCullingOn(); // closed: see past the silhouette
   renderer->AddActor(sphereActor);
 
   ReliefScene::UseShadowMaps(renderer);
@@ -565,10 +564,7 @@ void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height)
       mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
     }
     SetStones(mapper, torus, 0.05);
-    auto actor = ReliefActor(mapper, "stones_color.png");
-    // a closed shape: past the silhouette lies the background, not the far side's inside
-    actor->GetProperty()->BackfaceCullingOn();
-    renderer->AddActor(actor);
+    renderer->AddActor(ReliefActor(mapper, "stones_color.png"));
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetFocalPoint(0.3, 0.0, 0.25);
     camera->SetPosition(0.3, -2.0, 0.6);
@@ -658,13 +654,6 @@ vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size
   resize->SetOutputDimensions(size, size, 1);
   resize->Update();
   return resize->GetOutput();
-}
-
-vtkSmartPointer<vtkActor> CulledActor(vtkMapper* mapper)
-{
-  auto actor = ReliefActor(mapper, "");
-  actor->GetProperty()->BackfaceCullingOn();
-  return actor;
 }
 
 Lineup::Lineup(vtkRenderWindow* window, vtkRenderer* renderer,

@@ -136,10 +136,6 @@ void ShowQuadricShadows(vtkRenderWindow* window, int width, int height);
 /// The height map `name` of Data/ resampled to size x size texels (vtkImageResize).
 vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size);
 
-/// An actor with `mapper`, no colour texture, back faces culled: the studies' closed
-/// shapes, where past an outline lies the background, never the far side's inside.
-vtkSmartPointer<vtkActor> CulledActor(vtkMapper* mapper);
-
 /// The actors one study compares, in one renderer (its other props removed), shown one
 /// at a time.
 class Lineup

@@ -13,6 +13,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkReliefCoincidentPoints.h"
 #include "vtkReliefForwardMessages.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkSMPTools.h"
@@ -23,6 +24,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 vtkStandardNewMacro(vtkLocalQuadricFilter);
@@ -42,7 +44,9 @@ struct PointTriangles
   std::vector<vtkIdType> Triangles; // triangle indices
 };
 
-PointTriangles TrianglesAroundPoints(vtkPolyData* mesh)
+// The triangles around each point, coincident points taken as one (`merged`: a point's
+// stand-in), so that a texture seam's two copies of a point share one neighbourhood.
+PointTriangles TrianglesAroundPoints(vtkPolyData* mesh, const std::vector<vtkIdType>& merged)
 {
   PointTriangles incidence;
   const vtkIdType pointCount = mesh->GetNumberOfPoints();
@@ -55,7 +59,10 @@ PointTriangles TrianglesAroundPoints(vtkPolyData* mesh)
     polys->GetCurrentCell(size, ids);
     if (size == 3) // the tangent frame filter triangulates: nothing else is left
     {
-      incidence.Corners.insert(incidence.Corners.end(), ids, ids + 3);
+      for (int corner = 0; corner < 3; ++corner)
+      {
+        incidence.Corners.push_back(merged[ids[corner]]);
+      }
     }
   }
   incidence.Offsets.assign(static_cast<size_t>(pointCount) + 1, 0);
@@ -191,7 +198,13 @@ int vtkLocalQuadricFilter::RequestData(
   vtkPolyData* mesh = frame->GetOutput();
   this->UpdateProgress(0.3);
 
-  const PointTriangles incidence = TrianglesAroundPoints(mesh);
+  std::vector<vtkIdType> merged = vtkReliefCoincidentPoints(mesh);
+  if (merged.empty()) // a point is not finite: no point stands for another
+  {
+    merged.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));
+    std::iota(merged.begin(), merged.end(), 0);
+  }
+  const PointTriangles incidence = TrianglesAroundPoints(mesh, merged);
   this->UpdateProgress(0.4);
 
   const vtkIdType pointCount = mesh->GetNumberOfPoints();
@@ -210,7 +223,7 @@ int vtkLocalQuadricFilter::RequestData(
     vtkIdType undetermined = 0;
     for (vtkIdType p = begin; p < end; ++p)
     {
-      Neighbours(incidence, p, rings, neighbours);
+      Neighbours(incidence, merged[p], rings, neighbours);
       double position[3];
       points->GetPoint(p, position);
       double quadric[2];

@@ -1,14 +1,24 @@
 #include "vtkReliefSurfaceFilter.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkReliefCoincidentPoints.h"
 #include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
 
 vtkStandardNewMacro(vtkReliefSurfaceFilter);
 
@@ -50,6 +60,72 @@ vtkSmartPointer<vtkDataArray> Named(vtkDataArray* array, const char* name)
 }
 }
 
+bool vtkReliefSurfaceFilter::IsClosed(vtkPolyData* mesh)
+{
+  if (!mesh || mesh->GetNumberOfPolys() == 0)
+  {
+    return false;
+  }
+  const std::vector<vtkIdType> canonical = vtkReliefCoincidentPoints(mesh);
+  if (canonical.empty())
+  {
+    return false;
+  }
+  // per undirected edge: runs from its lower id (low 32 bits) and from its higher id
+  constexpr std::uint64_t Backward = std::uint64_t(1) << 32;
+  std::unordered_map<std::uint64_t, std::uint64_t> runs;
+  const std::uint64_t stride = static_cast<std::uint64_t>(canonical.size());
+  double volume = 0.0;
+  std::vector<vtkIdType> corners;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(size, ids);
+    corners.clear();
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      corners.push_back(canonical[ids[k]]);
+    }
+    std::vector<vtkIdType> sorted = corners;
+    std::sort(sorted.begin(), sorted.end());
+    if (size < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    {
+      continue; // degenerate: no area, no side
+    }
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      const vtkIdType from = corners[k];
+      const vtkIdType to = corners[(k + 1) % size];
+      const std::uint64_t low = static_cast<std::uint64_t>(std::min(from, to));
+      const std::uint64_t high = static_cast<std::uint64_t>(std::max(from, to));
+      runs[low * stride + high] += from < to ? 1 : Backward;
+    }
+    double origin[3], a[3], b[3];
+    mesh->GetPoint(corners[0], origin);
+    for (vtkIdType k = 1; k + 1 < size; ++k)
+    {
+      mesh->GetPoint(corners[k], a);
+      mesh->GetPoint(corners[k + 1], b);
+      volume += origin[0] * (a[1] * b[2] - a[2] * b[1]) - origin[1] * (a[0] * b[2] - a[2] * b[0]) +
+        origin[2] * (a[0] * b[1] - a[1] * b[0]);
+    }
+  }
+  if (runs.empty() || !(volume > 0.0))
+  {
+    return false;
+  }
+  for (const auto& edge : runs)
+  {
+    if (edge.second != 1 + Backward)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 vtkReliefSurfaceFilter::vtkReliefSurfaceFilter() = default;
 vtkReliefSurfaceFilter::~vtkReliefSurfaceFilter() = default;
 
@@ -79,7 +155,152 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::ExtractTriangles(vtkPolyDat
                   "surface (vtkGeometryFilter extracts one from other datasets).");
     return nullptr;
   }
-  return mesh;
+  this->ReportNonFiniteTextureCoordinates(mesh);
+  this->ReportNormalsWithoutDirection(mesh);
+  return this->LeaveOutNonFinitePoints(mesh);
+}
+
+bool vtkReliefSurfaceFilter::HasDirection(vtkDataArray* normals, vtkIdType point)
+{
+  double normal[3];
+  normals->GetTuple(point, normal);
+  const double length = vtkMath::Norm(normal);
+  return std::isfinite(length) && length > 0.0;
+}
+
+void vtkReliefSurfaceFilter::ReportNormalsWithoutDirection(vtkPolyData* mesh)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  if (!normals)
+  {
+    return;
+  }
+  vtkIdType count = 0;
+  vtkIdType first = -1;
+  for (vtkIdType point = 0; point < normals->GetNumberOfTuples(); ++point)
+  {
+    if (!HasDirection(normals, point))
+    {
+      first = count++ == 0 ? point : first;
+    }
+  }
+  if (count > 0)
+  {
+    vtkWarningMacro(<< count << " of the mesh's " << normals->GetNumberOfTuples()
+                    << " points (the first: point " << first
+                    << ") have normals without a direction (zero or not finite): the surface's "
+                       "own normal is used there. Give unit normals, or none to have them "
+                       "computed.");
+  }
+}
+
+vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutNonFinitePoints(vtkPolyData* mesh)
+{
+  auto isFinite = [](const double* p) {
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  };
+  vtkIdType count = 0;
+  vtkIdType first = -1;
+  vtkIdType finite = -1;
+  for (vtkIdType point = 0; point < mesh->GetNumberOfPoints(); ++point)
+  {
+    if (!isFinite(mesh->GetPoint(point)))
+    {
+      first = count++ == 0 ? point : first;
+    }
+    else if (finite < 0)
+    {
+      finite = point;
+    }
+  }
+  if (count == 0)
+  {
+    return mesh;
+  }
+  vtkWarningMacro(<< count << " of the mesh's " << mesh->GetNumberOfPoints()
+                  << " points (the first: point " << first
+                  << ") are not finite: the triangles that use them are left out. Fix or remove "
+                     "those points.");
+  // The points stay, with their data, so that bounds and buffers stay finite: moved next
+  // to a finite point, 1e-6 of the finite points' size away, not onto it (the filters
+  // take coincident points as one, see vtkReliefCoincidentPoints). Their triangles go.
+  vtkBoundingBox finiteBox;
+  for (vtkIdType point = 0; point < mesh->GetNumberOfPoints(); ++point)
+  {
+    double position[3];
+    mesh->GetPoint(point, position);
+    if (isFinite(position))
+    {
+      finiteBox.AddPoint(position);
+    }
+  }
+  double stand[3] = { 0.0, 0.0, 0.0 };
+  if (finite >= 0)
+  {
+    mesh->GetPoint(finite, stand);
+  }
+  const double size = finiteBox.IsValid() ? finiteBox.GetDiagonalLength() : 0.0;
+  stand[0] += size > 0.0 ? 1e-6 * size : 1e-6;
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(mesh->GetPoints());
+  for (vtkIdType point = 0; point < points->GetNumberOfPoints(); ++point)
+  {
+    if (!isFinite(points->GetPoint(point)))
+    {
+      points->SetPoint(point, stand);
+    }
+  }
+  vtkNew<vtkCellArray> kept;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(size, ids);
+    bool usable = true;
+    for (vtkIdType corner = 0; corner < size; ++corner)
+    {
+      usable = usable && isFinite(mesh->GetPoint(ids[corner]));
+    }
+    if (usable)
+    {
+      kept->InsertNextCell(size, ids);
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(mesh);
+  result->SetPoints(points);
+  result->SetPolys(kept);
+  return result;
+}
+
+bool vtkReliefSurfaceFilter::HasFiniteTextureCoordinates(vtkDataArray* tcoords, vtkIdType point)
+{
+  return std::isfinite(tcoords->GetComponent(point, 0)) &&
+    std::isfinite(tcoords->GetComponent(point, 1));
+}
+
+void vtkReliefSurfaceFilter::ReportNonFiniteTextureCoordinates(vtkPolyData* mesh)
+{
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  vtkIdType count = 0;
+  vtkIdType first = -1;
+  for (vtkIdType point = 0; point < tcoords->GetNumberOfTuples(); ++point)
+  {
+    if (!HasFiniteTextureCoordinates(tcoords, point))
+    {
+      first = count++ == 0 ? point : first;
+    }
+  }
+  if (count > 0)
+  {
+    vtkWarningMacro(<< count << " of the mesh's " << tcoords->GetNumberOfTuples()
+                    << " points (the first: point " << first
+                    << ") have texture coordinates that are not finite: the triangles around "
+                       "them are drawn without relief. Give every point finite texture "
+                       "coordinates (vtkTextureMapToPlane, vtkTextureMapToCylinder or "
+                       "vtkTextureMapToSphere map new ones).");
+  }
 }
 
 void vtkReliefSurfaceFilter::NameAttributes(vtkPolyData* output)

@@ -11,7 +11,11 @@
  *
  * A mesh without texture coordinates is an error (map some with vtkTextureMapToPlane,
  * vtkTextureMapToCylinder or vtkTextureMapToSphere), as is one without polygons; the
- * output is then the input, unchanged, and GetHasSurface() is false.
+ * output is then the input, unchanged, and GetHasSurface() is false. Texture coordinates
+ * that are not finite (NaN, infinite) are a warning: the mappers draw the triangles
+ * around them without relief. So are normals without a direction (zero, not finite),
+ * where the surface's own normal stands in, and points that are not finite, whose
+ * triangles are left out.
  */
 #ifndef vtkReliefSurfaceFilter_h
 #define vtkReliefSurfaceFilter_h
@@ -19,6 +23,8 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkReliefFiltersModule.h"
 #include "vtkSmartPointer.h" // for ExtractTriangles
+
+class vtkDataArray;
 
 class VTKRELIEFFILTERS_EXPORT vtkReliefSurfaceFilter : public vtkPolyDataAlgorithm
 {
@@ -29,6 +35,21 @@ public:
 
   /// True when the last update found texture coordinates and polygons.
   vtkGetMacro(HasSurface, bool);
+
+  /**
+   * True when the polygons of `mesh` enclose a volume and face out of it: with coincident
+   * points taken as one (texture seams duplicate them), every edge joins exactly two
+   * polygons that run along it in opposite directions, and the enclosed signed volume is
+   * positive. Degenerate polygons (repeated corners) are left out. Seen from outside such
+   * a mesh, back faces are visible only through outlines that relief carves.
+   */
+  static bool IsClosed(vtkPolyData* mesh);
+
+  /// Whether both texture coordinates of `point` in `tcoords` are finite numbers.
+  static bool HasFiniteTextureCoordinates(vtkDataArray* tcoords, vtkIdType point);
+
+  /// Whether the normal of `point` in `normals` has a direction (finite, not zero).
+  static bool HasDirection(vtkDataArray* normals, vtkIdType point);
 
 protected:
   vtkReliefSurfaceFilter();
@@ -44,6 +65,17 @@ protected:
 
   /// Names the output's unnamed texture coordinates and normals (copies; the input stays).
   static void NameAttributes(vtkPolyData* output);
+
+  ///@{
+  /// One warning each when some of the mesh's texture coordinates are not finite or some
+  /// of its normals have no direction (zero or not finite).
+  void ReportNonFiniteTextureCoordinates(vtkPolyData* mesh);
+  void ReportNormalsWithoutDirection(vtkPolyData* mesh);
+  ///@}
+
+  /// The mesh without the triangles that use points that are not finite (with one
+  /// warning), those points moved onto a finite one; the mesh itself when all are finite.
+  vtkSmartPointer<vtkPolyData> LeaveOutNonFinitePoints(vtkPolyData* mesh);
 
   bool HasSurface = false;
 

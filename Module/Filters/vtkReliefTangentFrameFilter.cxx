@@ -100,9 +100,10 @@ vtkSmartPointer<vtkFloatArray> ComputeTextureScale(vtkPolyData* mesh)
     const glm::dvec2 uv2 = TupleOf2(tcoords, ids[2]) - TupleOf2(tcoords, ids[0]);
     const double uvArea = uv1.x * uv2.y - uv2.x * uv1.y;
     const double area = 0.5 * glm::length(glm::cross(edge1, edge2));
-    if (std::abs(uvArea) < 1e-300 || area <= 0.0)
+    if (!(std::abs(uvArea) >= 1e-300 && area > 0.0 && std::isfinite(uvArea) &&
+          std::isfinite(area)))
     {
-      continue; // no parametrization to measure on a degenerate triangle
+      continue; // no parametrization to measure on a degenerate or broken triangle
     }
     const glm::dvec3 dPdu = (edge1 * uv2.y - edge2 * uv1.y) / uvArea;
     const glm::dvec3 dPdv = (edge2 * uv1.x - edge1 * uv2.x) / uvArea;
@@ -137,6 +138,91 @@ vtkSmartPointer<vtkFloatArray> ComputeTextureScale(vtkPolyData* mesh)
   }
   return scale;
 }
+
+// The mesh, its normals without direction (zero, not finite) replaced by the surface's
+// own (vtkPolyDataNormals, not split), so that every frame has one.
+vtkSmartPointer<vtkPolyData> WithDirectedNormals(vtkPolyData* mesh)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  std::vector<vtkIdType> undirected;
+  for (vtkIdType point = 0; point < normals->GetNumberOfTuples(); ++point)
+  {
+    if (!vtkReliefSurfaceFilter::HasDirection(normals, point))
+    {
+      undirected.push_back(point);
+    }
+  }
+  if (undirected.empty())
+  {
+    return mesh;
+  }
+  vtkNew<vtkPolyData> bare;
+  bare->ShallowCopy(mesh);
+  bare->GetPointData()->SetNormals(nullptr);
+  vtkNew<vtkPolyDataNormals> surface;
+  surface->SetInputData(bare);
+  surface->SplittingOff();
+  surface->ConsistencyOff();
+  surface->ComputePointNormalsOn();
+  surface->ComputeCellNormalsOff();
+  surface->Update();
+  vtkDataArray* computed = surface->GetOutput()->GetPointData()->GetNormals();
+  auto repaired = vtk::TakeSmartPointer(normals->NewInstance());
+  repaired->DeepCopy(normals);
+  const double up[3] = { 0.0, 0.0, 1.0 }; // a point on degenerate triangles only
+  for (vtkIdType point : undirected)
+  {
+    repaired->SetTuple(
+      point, vtkReliefSurfaceFilter::HasDirection(computed, point) ? computed->GetTuple(point) : up);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(mesh);
+  result->GetPointData()->SetNormals(repaired);
+  return result;
+}
+
+// The mesh with point tangents from vtkPolyDataTangents, taken over the triangles whose
+// texture coordinates are all finite: a broken triangle's tangents would spoil those of
+// every point it shares with good ones.
+vtkSmartPointer<vtkPolyData> WithTangents(vtkPolyData* mesh)
+{
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  vtkNew<vtkCellArray> finite;
+  bool allFinite = true;
+  auto triangles = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (triangles->GoToFirstCell(); !triangles->IsDoneWithTraversal(); triangles->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    triangles->GetCurrentCell(size, ids);
+    bool usable = true;
+    for (vtkIdType corner = 0; corner < size; ++corner)
+    {
+      usable =
+        usable && vtkReliefSurfaceFilter::HasFiniteTextureCoordinates(tcoords, ids[corner]);
+    }
+    allFinite = allFinite && usable;
+    if (usable)
+    {
+      finite->InsertNextCell(size, ids);
+    }
+  }
+  vtkNew<vtkPolyData> source;
+  source->ShallowCopy(mesh);
+  if (!allFinite)
+  {
+    source->SetPolys(finite);
+  }
+  vtkNew<vtkPolyDataTangents> tangents;
+  tangents->SetInputData(source);
+  tangents->ComputePointTangentsOn();
+  tangents->ComputeCellTangentsOff();
+  tangents->Update();
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(mesh);
+  result->GetPointData()->SetTangents(tangents->GetOutput()->GetPointData()->GetTangents());
+  return result;
+}
 }
 
 vtkReliefTangentFrameFilter::vtkReliefTangentFrameFilter() = default;
@@ -166,16 +252,15 @@ int vtkReliefTangentFrameFilter::RequestData(
     normals->Update();
     mesh = normals->GetOutput();
   }
+  else
+  {
+    mesh = WithDirectedNormals(mesh);
+  }
   this->UpdateProgress(0.5);
 
   if (!mesh->GetPointData()->GetTangents())
   {
-    vtkNew<vtkPolyDataTangents> tangents;
-    tangents->SetInputData(mesh);
-    tangents->ComputePointTangentsOn();
-    tangents->ComputeCellTangentsOff();
-    tangents->Update();
-    mesh = tangents->GetOutput();
+    mesh = WithTangents(mesh);
   }
   this->UpdateProgress(0.75);
 

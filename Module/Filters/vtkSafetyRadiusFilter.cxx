@@ -567,6 +567,12 @@ void vtkSafetyRadiusFilter::SetErrorTolerance(double tolerance)
                                       << " is not a depth (it must be 0 or more); using 0.");
     tolerance = 0.0;
   }
+  else if (tolerance > 1.0)
+  {
+    vtkWarningMacro("ErrorTolerance " << tolerance
+                                      << " is more than the whole relief depth; using 1.");
+    tolerance = 1.0;
+  }
   if (this->ErrorTolerance != tolerance)
   {
     this->ErrorTolerance = tolerance;

@@ -76,7 +76,8 @@ public:
   /**
    * The depth e by which a ray may pass below the field unnoticed (see the class
    * description), as a fraction of the relief's depth. Default 0: the search is exact.
-   * A negative value is replaced by 0, with a warning.
+   * Values out of [0, 1] (negative, NaN, more than the whole depth) are clamped, with a
+   * warning.
    */
   virtual void SetErrorTolerance(double tolerance);
   vtkGetMacro(ErrorTolerance, double);

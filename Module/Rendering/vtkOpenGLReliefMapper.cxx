@@ -1,13 +1,16 @@
 #include "vtkOpenGLReliefMapper.h"
 
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkConeStepMapFilter.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMaximumMipmapFilter.h"
@@ -16,10 +19,13 @@
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkReliefForwardMessages.h"
+#include "vtkReliefSurfaceFilter.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
@@ -47,6 +53,7 @@
 #include "vtkReliefVertexImpl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <regex>
 #include <vector>
 
@@ -155,6 +162,34 @@ int vtkOpenGLReliefMapper::FillInputPortInformation(int port, vtkInformation* in
   return this->Superclass::FillInputPortInformation(port, info);
 }
 
+void vtkOpenGLReliefMapper::ComputeBounds()
+{
+  this->Superclass::ComputeBounds();
+  if (std::all_of(this->Bounds, this->Bounds + 6, [](double b) { return std::isfinite(b); }))
+  {
+    return;
+  }
+  vtkPolyData* input = this->GetInput();
+  vtkBoundingBox box;
+  for (vtkIdType point = 0; input && point < input->GetNumberOfPoints(); ++point)
+  {
+    double position[3];
+    input->GetPoint(point, position);
+    if (std::isfinite(position[0]) && std::isfinite(position[1]) && std::isfinite(position[2]))
+    {
+      box.AddPoint(position);
+    }
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(this->Bounds);
+  }
+  else
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+  }
+}
+
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefMapper::SetSearchMethod(int method)
 {
@@ -261,6 +296,12 @@ void vtkOpenGLReliefMapper::SetSafetyRadiusTolerance(double tolerance)
                                              << " is not a depth (it must be 0 or more); using 0.");
     tolerance = 0.0;
   }
+  else if (tolerance > 1.0)
+  {
+    vtkWarningMacro("SafetyRadiusTolerance " << tolerance
+                                             << " is more than the whole relief depth; using 1.");
+    tolerance = 1.0;
+  }
   // read by the next render's acceleration update: nothing to rebuild here
   this->SafetyRadiusTolerance = tolerance;
 }
@@ -270,7 +311,7 @@ void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
   if (depthScale != this->DepthScale)
   {
     this->DepthScale = depthScale;
-    this->WarnedFlatDepthScale = false;
+    this->WarnedDepthScale = false;
   }
 }
 
@@ -282,6 +323,11 @@ void vtkOpenGLReliefMapper::SetSelfShadowing(bool enabled)
 void vtkOpenGLReliefMapper::SetDepthCorrection(bool enabled)
 {
   this->DepthCorrection = enabled;
+}
+
+void vtkOpenGLReliefMapper::SetTwoSidedRelief(bool enabled)
+{
+  this->TwoSidedRelief = enabled;
 }
 
 void vtkOpenGLReliefMapper::SetDisplayMode(int mode)
@@ -661,13 +707,41 @@ bool vtkOpenGLReliefMapper::UpdateRelief(vtkRenderer* ren)
   {
     this->UpdateAcceleration(ren);
   }
-  if (relief && this->DepthScale <= 0.0 && !this->WarnedFlatDepthScale)
-  {
-    this->WarnedFlatDepthScale = true;
-    vtkWarningMacro("DepthScale is " << this->DepthScale
-                                     << ": the relief is flat. Set a positive world depth.");
-  }
   return relief;
+}
+
+double vtkOpenGLReliefMapper::UsableDepthScale(vtkActor* actor)
+{
+  const double depth = this->DepthScale;
+  const double size = actor->GetLength(); // the world diagonal of what the actor draws
+  if (std::isfinite(depth) && depth > 0.0 && !(depth > size))
+  {
+    return depth;
+  }
+  if (!this->WarnedDepthScale)
+  {
+    this->WarnedDepthScale = true;
+    const double suggestion = 0.05 * size;
+    if (!std::isfinite(depth))
+    {
+      vtkWarningMacro("DepthScale is " << depth << ", not a world depth: the relief is drawn "
+                                       << "flat. Set a positive, finite depth, a few percent of "
+                                       << "the mesh's size (for example " << suggestion << ").");
+    }
+    else if (depth <= 0.0)
+    {
+      vtkWarningMacro("DepthScale is " << depth
+                                       << ": the relief is flat. Set a positive world depth.");
+    }
+    else
+    {
+      vtkWarningMacro("DepthScale " << depth << " is deeper than the whole mesh is large ("
+                                    << size << " across): the relief is drawn flat. Relief is "
+                                    << "a few percent of the mesh's size: try " << suggestion
+                                    << ".");
+    }
+  }
+  return 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -680,7 +754,15 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     this->ShaderOptionsTime.Modified();
   }
   this->MapReliefAttributes(relief);
+  this->DrawnDepthScale = relief ? this->UsableDepthScale(actor) : 0.0;
   this->Superclass::RenderPieceStart(ren, actor);
+  this->CullingBackFaces = this->ShouldCullBackFaces(ren, actor);
+  if (this->CullingBackFaces)
+  {
+    vtkOpenGLState* state = static_cast<vtkOpenGLRenderer*>(ren)->GetState();
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_BACK);
+  }
   if (this->DrawingRelief)
   {
     this->DepthTexture->Activate();
@@ -709,7 +791,47 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
     }
     this->DepthTexture->Deactivate();
   }
+  if (this->CullingBackFaces)
+  {
+    static_cast<vtkOpenGLRenderer*>(ren)->GetState()->vtkglDisable(GL_CULL_FACE);
+    this->CullingBackFaces = false;
+  }
   this->Superclass::RenderPieceFinish(ren, actor);
+}
+
+bool vtkOpenGLReliefMapper::ShouldCullBackFaces(vtkRenderer* ren, vtkActor* actor)
+{
+  vtkProperty* property = actor->GetProperty();
+  // the actor's own culling, clipping planes (which open the mesh) and two-sided relief
+  // leave the faces as VTK draws them
+  if (!this->DrawingRelief || this->TwoSidedRelief || property->GetBackfaceCulling() ||
+    property->GetFrontfaceCulling() || this->GetNumberOfClippingPlanes() > 0)
+  {
+    return false;
+  }
+  if (this->SurfaceClosedMesh != this->CurrentInput ||
+    this->SurfaceClosedTime != this->CurrentInput->GetMTime())
+  {
+    this->SurfaceClosedMesh = this->CurrentInput;
+    this->SurfaceClosedTime = this->CurrentInput->GetMTime();
+    this->SurfaceClosed = vtkReliefSurfaceFilter::IsClosed(this->CurrentInput);
+  }
+  if (!this->SurfaceClosed)
+  {
+    return false;
+  }
+  // from inside the bounds the camera may be inside the shape, whose back faces it sees
+  double bounds[6];
+  actor->GetBounds(bounds);
+  const double* eye = ren->GetActiveCamera()->GetPosition();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (eye[axis] < bounds[2 * axis] || eye[axis] > bounds[2 * axis + 1])
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 bool vtkOpenGLReliefMapper::GetNeedToRebuildShaders(
@@ -880,12 +1002,13 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
     program->SetUniformf(
       "reliefNormalRatio", static_cast<float>(this->ReliefTextureFilter->GetDepthToTexelRatio()));
   }
-  program->SetUniformf("reliefDepthScale", static_cast<float>(std::max(this->DepthScale, 0.0)));
+  program->SetUniformf("reliefDepthScale", static_cast<float>(this->DrawnDepthScale));
   program->SetUniformi("reliefLinearSteps", this->LinearSteps);
   program->SetUniformi("reliefBinarySteps", this->BinarySteps);
   program->SetUniformi("reliefSelfShadowing", this->SelfShadowing ? 1 : 0);
   program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
+  program->SetUniformi("reliefTwoSided", this->TwoSidedRelief ? 1 : 0);
   if (NeedsAcceleration(this->ActiveSearchMethod))
   {
     program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
@@ -996,6 +1119,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "SelfShadowing: " << this->SelfShadowing << "\n";
   os << indent << "DepthCorrection: " << this->DepthCorrection << "\n";
+  os << indent << "TwoSidedRelief: " << this->TwoSidedRelief << "\n";
   os << indent << "DisplayMode: " << (this->DisplayMode == SAMPLE_COUNT ? "SampleCount" : "Shaded")
      << "\n";
   os << indent << "HeightMap: " << this->GetHeightMap() << "\n";

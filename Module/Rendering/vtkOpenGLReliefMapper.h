@@ -131,8 +131,9 @@ public:
   /**
    * The error tolerance e of the safety radii the mapper builds for SafetyRadius (see
    * vtkSafetyRadiusFilter), in units of relief depth: 0 (default) is exact; e > 0 lets
-   * the search step over the ray where it is at most e below the field. Negative values
-   * become 0, with a warning. A precomputed acceleration image carries its own e.
+   * the search step over the ray where it is at most e below the field. Values out of
+   * [0, 1] (the whole depth) are clamped, with a warning. A precomputed acceleration
+   * image carries its own e.
    */
   void SetSafetyRadiusTolerance(double tolerance);
   vtkGetMacro(SafetyRadiusTolerance, double);
@@ -151,8 +152,9 @@ public:
 
   ///@{
   /**
-   * World depth of relief depth 1 (s_z). Zero or negative: no relief, the mesh is
-   * rendered flat. Default 0.05.
+   * World depth of relief depth 1 (s_z). Default 0.05. A value that cannot be drawn (zero,
+   * negative, not finite, or deeper than the actor is large) draws the mesh flat, with
+   * one warning.
    */
   void SetDepthScale(double depthScale);
   vtkGetMacro(DepthScale, double);
@@ -173,6 +175,23 @@ public:
   void SetDepthCorrection(bool enabled);
   vtkGetMacro(DepthCorrection, bool);
   vtkBooleanMacro(DepthCorrection, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Off (default): the mapper decides which faces carry relief, so that past an outline
+   * carved by the relief lies what is behind the shape. Front faces always do. Back faces
+   * of a closed mesh (vtkReliefSurfaceFilter::IsClosed) seen from outside its bounds are
+   * not drawn: they could only show through carved outlines. Other back faces (the inside
+   * of an open shell, a closed one seen from within) carry relief where the view ray
+   * reaches them from inside the shape; the quadric frame leaves out those behind an
+   * outline its front faces carve. On: every face carries relief wherever VTK draws it,
+   * back faces as relief carved into their back (two-sided sheets). The actor's culling
+   * properties apply either way.
+   */
+  void SetTwoSidedRelief(bool enabled);
+  vtkGetMacro(TwoSidedRelief, bool);
+  vtkBooleanMacro(TwoSidedRelief, bool);
   ///@}
 
   enum DisplayModes
@@ -220,6 +239,8 @@ protected:
   ~vtkOpenGLReliefMapper() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// The input's bounds, without points that are not finite: those are not drawn.
+  void ComputeBounds() override;
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override;
@@ -231,6 +252,11 @@ protected:
 
   /// Brings the relief surface and texture up to date; false when relief cannot be drawn.
   bool UpdateRelief(vtkRenderer* ren);
+  /**
+   * DepthScale, or 0 (the relief drawn flat) where it cannot be drawn: not finite, not
+   * positive, or deeper than the actor is large. Warns once per value.
+   */
+  double UsableDepthScale(vtkActor* actor);
   /// The mesh as drawn (CurrentInput): the tangent frame filter's output here.
   virtual bool UpdateReliefSurface();
   bool UpdateReliefTexture(vtkRenderer* ren);
@@ -243,6 +269,8 @@ protected:
   void SetActiveSearchMethod(int method);
   /// Binds the frame's arrays to the shader inputs (none when relief is not drawn).
   virtual void MapReliefAttributes(bool relief);
+  /// Whether this render leaves out back faces, which only carved outlines could show.
+  bool ShouldCullBackFaces(vtkRenderer* ren, vtkActor* actor);
   ///@{
   /// Shader inputs of the frame, bound by name to the relief surface's point arrays.
   static constexpr const char* NormalAttribute = "reliefNormalMC";
@@ -273,6 +301,7 @@ protected:
   bool SelfShadowing = true;
   bool DepthCorrection = true;
   int DisplayMode = SHADED;
+  bool TwoSidedRelief = false;
 
   vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
@@ -297,8 +326,13 @@ protected:
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
   bool DrawingRelief = false;
+  bool SurfaceClosed = false; // of the surface drawn, as of SurfaceClosedTime
+  vtkMTimeType SurfaceClosedTime = 0;
+  vtkPolyData* SurfaceClosedMesh = nullptr; // compared by address only
+  bool CullingBackFaces = false; // this render enabled GL's back-face culling
   bool WarnedMissingHeightMap = false;
-  bool WarnedFlatDepthScale = false;
+  bool WarnedDepthScale = false;
+  double DrawnDepthScale = 0.0; // what this render's shaders use: UsableDepthScale()
   bool WarnedNoSelfShadowing = false;
 
 private:

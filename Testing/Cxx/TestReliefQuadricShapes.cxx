@@ -1,8 +1,9 @@
 // vtkOpenGLQuadricReliefMapper on the shapes of seed 000, in one distance mode (the
 // argument: Approximate or Exact): a sphere, a cylinder, the inside of a torus's ring
 // (negative Gaussian curvature, the saddles of Fig. 14) and an open piece of cylinder
-// (a mesh with boundaries, where the relief simply ends with the mesh). Stones on each,
-// seen so that outlines cross the relief. Regression images, one per mode.
+// (a mesh with boundaries, where the relief simply ends with the mesh, seen so that its
+// inside shows beside its outer side). Stones on each, seen so that outlines cross the
+// relief, with the actors' default properties. Regression images, one per mode.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -10,7 +11,6 @@
 #include "vtkNew.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkPolyData.h"
-#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -23,7 +23,6 @@ namespace
 struct View
 {
   vtkSmartPointer<vtkPolyData> Shape;
-  bool Closed; // cull back faces: past the outline lies what is behind the shape
   double Position[3];
   double FocalPoint[3];
   double ViewAngle;
@@ -36,9 +35,7 @@ void Show(vtkRenderWindow* window, const View& view, int mode, double left, doub
   vtkNew<vtkOpenGLQuadricReliefMapper> mapper;
   mapper->SetDistanceMode(mode);
   ReliefScene::SetStones(mapper, view.Shape, 0.06);
-  auto actor = ReliefScene::ReliefActor(mapper, "stones_color.png");
-  actor->GetProperty()->SetBackfaceCulling(view.Closed);
-  renderer->AddActor(actor);
+  renderer->AddActor(ReliefScene::ReliefActor(mapper, "stones_color.png"));
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(view.Position);
   camera->SetFocalPoint(view.FocalPoint);
@@ -58,11 +55,11 @@ int TestReliefQuadricShapes(int argc, char* argv[])
   // the torus lies in the x-z plane (axis y): looking along y into its hole shows the
   // inner, saddle-shaped side of the ring
   const View views[] = {
-    { ReliefScene::Sphere(32), true, { 0.0, 2.6, 0.9 }, { 0.0, 0.0, 0.0 }, 30.0 },
-    { ReliefScene::Cylinder(32), true, { 0.5, 3.4, 1.2 }, { 0.0, 0.0, 0.0 }, 30.0 },
-    { ReliefScene::Torus(48), true, { 0.25, 1.6, 0.15 }, { 0.0, 0.0, 0.0 }, 35.0 },
-    // the open piece from outside, its top rim and both side edges in view
-    { ReliefScene::Cylinder(32, 150.0), false, { 0.9, 2.6, 2.6 }, { 0.0, 0.3, 1.0 }, 35.0 },
+    { ReliefScene::Sphere(32), { 0.0, 2.6, 0.9 }, { 0.0, 0.0, 0.0 }, 30.0 },
+    { ReliefScene::Cylinder(32), { 0.5, 3.4, 1.2 }, { 0.0, 0.0, 0.0 }, 30.0 },
+    { ReliefScene::Torus(48), { 0.25, 1.6, 0.15 }, { 0.0, 0.0, 0.0 }, 35.0 },
+    // the open piece: its inside (left) past the top rim, its outer side and outline (right)
+    { ReliefScene::Cylinder(32, 150.0), { -0.8, -2.2, 2.4 }, { 0.0, 0.25, 0.9 }, 35.0 },
   };
   vtkNew<vtkRenderWindow> window;
   Show(window, views[0], mode, 0.0, 0.5);

@@ -16,7 +16,6 @@
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -36,11 +35,8 @@ vtkSmartPointer<Mapper> Show(vtkRenderWindow* window, vtkPolyData* shape, double
   ReliefScene::SetStones(mapper, shape, 0.06);
   auto renderer = ReliefScene::LitRenderer(window, 600, 300);
   renderer->SetViewport(left, 0.0, right, 1.0);
-  auto actor = ReliefScene::ReliefActor(mapper, "stones_color.png");
-  // closed shapes: a ray that leaves the quadric must see what lies behind the object,
-  // not the relief of its far side's inner faces
-  actor->GetProperty()->BackfaceCullingOn();
-  renderer->AddActor(actor);
+  // the actor's default properties: the mapper leaves out the back faces of closed shapes
+  renderer->AddActor(ReliefScene::ReliefActor(mapper, "stones_color.png"));
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetPosition(0.0, 3.0, 1.2);

@@ -268,6 +268,32 @@ TEST(LocalQuadricFilter, CylindersCurveAcrossTheAxisOnlyEvenOnTheirBoundary)
   }
 }
 
+TEST(LocalQuadricFilter, TextureSeamsShareOneNeighbourhood)
+{
+  // the cylinder's seam: columns 0 and n - 1 are two copies of the same points, as a
+  // texture seam makes them. Computed normals there lean to their one side; fitted over
+  // the triangles of both sides, the lean cancels (fitted over one side's, a is lost)
+  const double r = 0.75;
+  const int n = 49;
+  const int m = 5;
+  auto cylinder = Grid(n, m, Cylinder(r));
+  cylinder->GetPointData()->SetNormals(nullptr);
+  cylinder->GetPointData()->SetTangents(nullptr);
+  vtkNew<vtkLocalQuadricFilter> filter;
+  vtkPolyData* output = Fit(filter, cylinder);
+  ASSERT_EQ(output->GetNumberOfPoints(), n * m); // no normals were split
+  vtkDataArray* quadrics = Quadrics(output);
+  for (int j = 1; j + 1 < m; ++j)
+  {
+    for (int i : { 0, n - 1 })
+    {
+      const vtkIdType p = GridPoint(n, i, j);
+      EXPECT_NEAR(quadrics->GetComponent(p, 0), -1.0 / (2.0 * r), 0.01 / r) << i << ", " << j;
+      EXPECT_NEAR(quadrics->GetComponent(p, 1), 0.0, 1e-3) << i << ", " << j;
+    }
+  }
+}
+
 TEST(LocalQuadricFilter, UndeterminedPointsFallBackToFlatAndAreCounted)
 {
   // one good triangle; a zero-area triangle whose points lie on one line (each sees

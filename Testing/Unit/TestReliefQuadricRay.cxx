@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -116,6 +117,49 @@ TEST_F(ReliefQuadricRay, TheRangeEndsAtDepthOneOrBackOnTheQuadric)
   const CurvedRay bowl = MakeRay(View(1.5f, 0.0f), vec2(1.0f, 1.0f));
   EXPECT_NEAR(reliefRayAt(bowl.Ray, 1.0f).z, 1.0f, 1e-4);
   EXPECT_FALSE(reliefQuadricLeaves(bowl.Ray));
+}
+
+TEST_F(ReliefQuadricRay, BackFacesBehindACarvedOutlineAreTold)
+{
+  // A back face's view ray, followed back toward the viewer below the outward quadric,
+  // is behind an outline exactly when it comes back out of the quadric before depth 1:
+  // sampled here with the independent depth of Eq. 7. On a sphere of radius 0.5 that is
+  // where the ray meets the back face at more than about 66 degrees from its normal.
+  const vec2 quadrics[] = { { -1.0f, -1.0f }, { -1.0f, 0.0f }, { 0.6f, -0.4f }, { 1.0f, 1.0f },
+    { 0.0f, 0.0f } };
+  int behind = 0;
+  for (vec2 quadric : quadrics)
+  {
+    for (float tilt = 0.05f; tilt < 1.56f; tilt += 0.05f)
+    {
+      for (float azimuth : { 0.0f, 0.7f, 1.5708f })
+      {
+        const vec3 view = View(tilt, azimuth);
+        double deepest = 0.0;
+        bool leaves = false;
+        for (double d = 1e-4; d < 50.0 && !leaves && deepest < 1.0; d += 1e-4)
+        {
+          const double depth = DepthBelow(view, quadric, d);
+          deepest = std::max(deepest, depth);
+          leaves = depth < 0.0;
+        }
+        const bool expected = leaves && deepest < 1.0;
+        if (std::abs(deepest - 1.0) < 1e-3)
+        {
+          continue; // grazes depth 1: either answer holds
+        }
+        EXPECT_EQ(reliefQuadricBehindOutline(reliefQuadricDepthTerms(view, quadric, DepthScale)),
+          expected)
+          << "quadric (" << quadric.x << ", " << quadric.y << "), tilt " << tilt << ", azimuth "
+          << azimuth;
+        behind += expected ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(behind, 10); // the cases include outlines
+  const vec2 sphere(-1.0f, -1.0f);
+  EXPECT_FALSE(reliefQuadricBehindOutline(reliefQuadricDepthTerms(View(1.1f, 0.0f), sphere, DepthScale)));
+  EXPECT_TRUE(reliefQuadricBehindOutline(reliefQuadricDepthTerms(View(1.2f, 0.0f), sphere, DepthScale)));
 }
 
 TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)

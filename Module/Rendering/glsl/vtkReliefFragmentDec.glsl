@@ -14,6 +14,7 @@ uniform int reliefBinarySteps;
 uniform int reliefSelfShadowing;
 uniform int reliefDepthCorrection;
 uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
+uniform int reliefTwoSided;        // 1: back faces carry relief wherever they are drawn
 uniform mat4 reliefVCDCMatrix;
 in vec3 reliefPositionVSOutput;
 in vec2 reliefTCoordVSOutput;

@@ -1,11 +1,14 @@
   // frame: the fragment's view ray in relief texture space (seed 000 s3.4)
-  reliefGradX = dFdx(reliefTCoordVSOutput);
-  reliefGradY = dFdy(reliefTCoordVSOutput);
+  // false where the frame holds no texture mapping: the fragment is shaded plainly, and
+  // texture coordinates that are not finite (a broken mesh) are read at the origin
+  bool reliefFrameUsable =
+    !any(isnan(reliefTCoordVSOutput)) && !any(isinf(reliefTCoordVSOutput));
+  vec2 reliefEntryTCoord = reliefFrameUsable ? reliefTCoordVSOutput : vec2(0.0);
+  reliefGradX = dFdx(reliefEntryTCoord);
+  reliefGradY = dFdy(reliefEntryTCoord);
   reliefLod = reliefLevel(reliefTextureSize);
   vec3 reliefViewVC =
     cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
-  // false where the frame holds no texture mapping: the fragment is shaded plainly
-  bool reliefFrameUsable = true;
 #ifdef RELIEF_DERIVATIVE_FRAME
   // the derivative frame (seed 003): the triangle's own mapping, from how position and
   // texture coordinates change from pixel to pixel; its normal faces the viewer
@@ -26,7 +29,7 @@
     reliefAlongX, reliefAlongY, reliefGradX, reliefGradY, reliefFrameN);
   reliefAxisU = reliefAxes.u;
   reliefAxisV = reliefAxes.v;
-  reliefFrameUsable = reliefAxes.usable;
+  reliefFrameUsable = reliefFrameUsable && reliefAxes.usable;
 #elif defined(RELIEF_TANGENT_FRAME)
   reliefFrameN = normalize(reliefNormalVSOutput);
   vec3 reliefFrameT = normalize(
@@ -58,11 +61,17 @@
     // that comes back out of it without meeting the relief is past the silhouette
     vec3 reliefViewTF = vec3(dot(reliefViewVC, reliefFrameT), dot(reliefViewVC, reliefFrameB),
       dot(reliefViewVC, reliefFrameN));
+    // a back face draws relief only where the ray reaches it from inside the shape
+    if (!gl_FrontFacing && reliefTwoSided == 0 && reliefQuadricBehindOutline(
+      reliefQuadricDepthTerms(reliefViewTF, reliefQuadricVSOutput, reliefDepthScale)))
+    {
+      discard;
+    }
     vec2 reliefQuadric = gl_FrontFacing ? reliefQuadricVSOutput : -reliefQuadricVSOutput;
     vec2 reliefTerms = reliefQuadricDepthTerms(reliefViewTF, reliefQuadric, reliefDepthScale);
     float reliefRange = reliefQuadricRange(reliefTerms);
     ReliefRay reliefViewRayTS = reliefQuadricViewRay(
-      reliefTCoordVSOutput, reliefViewTF, reliefScale, reliefTerms, reliefRange);
+      reliefEntryTCoord, reliefViewTF, reliefScale, reliefTerms, reliefRange);
 #ifdef RELIEF_EXACT_DISTANCE
     reliefViewRayTS = reliefQuadricExact(
       reliefViewRayTS, reliefViewTF, reliefQuadric, reliefDepthScale, reliefRange);
@@ -77,7 +86,7 @@
     reliefSurfaceSlope = reliefFrameT * reliefQuadricSlope.x + reliefFrameB * reliefQuadricSlope.y;
 #else
     ReliefRay reliefViewRayTS =
-      reliefViewRay(reliefTCoordVSOutput, reliefToTexture(reliefViewVC));
+      reliefViewRay(reliefEntryTCoord, reliefToTexture(reliefViewVC));
     reliefViewHit = reliefSearch(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
     reliefHitDistance = reliefViewHit.position.z * reliefDepthScale /
       max(-dot(reliefViewVC, reliefFrameN), 1e-6);
@@ -85,7 +94,7 @@
   }
   else
   {
-    reliefViewHit.position = vec3(reliefTCoordVSOutput, 0.0);
+    reliefViewHit.position = vec3(reliefEntryTCoord, 0.0);
     reliefViewHit.clear = reliefViewHit.position;
     reliefViewHit.t = 0.0;
     reliefViewHit.hit = true;
@@ -97,12 +106,16 @@
   // Textures repeat with period 1: bring the hit back within half a tile of the entry
   // (Mesa's llvmpipe stalls on mipmapped 8-bit reads far from it; grazing rays run far).
   // A colour texture that does not repeat reads right wherever the hit stays that close.
-  reliefHitTCoord -= round(reliefHitTCoord - reliefTCoordVSOutput);
+  reliefHitTCoord -= round(reliefHitTCoord - reliefEntryTCoord);
   vec3 reliefHitVC = reliefPositionVSOutput + reliefViewVC * reliefHitDistance;
   // the depth's gradient along the surface tilts the normal: n = N + s_z grad(depth)
-  vec2 reliefSlope = reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0);
-  vec3 reliefLitNormalVC = normalize(reliefFrameN + reliefSurfaceSlope +
-    reliefAxisU * reliefSlope.x + reliefAxisV * reliefSlope.y);
+  vec3 reliefFieldSlopeVC = vec3(0.0);
+  if (reliefFrameUsable)
+  {
+    vec2 reliefSlope = reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0);
+    reliefFieldSlopeVC = reliefAxisU * reliefSlope.x + reliefAxisV * reliefSlope.y;
+  }
+  vec3 reliefLitNormalVC = normalize(reliefFrameN + reliefSurfaceSlope + reliefFieldSlopeVC);
   vec4 reliefHitDC = reliefVCDCMatrix * vec4(reliefHitVC, 1.0);
   float reliefFragDepth = reliefDepthCorrection == 1 ?
     clamp(0.5 * reliefHitDC.z / reliefHitDC.w + 0.5, 0.0, 1.0) : gl_FragCoord.z;

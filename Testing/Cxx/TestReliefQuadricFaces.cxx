@@ -1,0 +1,226 @@
+// Which faces of vtkOpenGLQuadricReliefMapper carry relief, with the actors' default
+// properties (vtkOpenGLReliefMapper::SetTwoSidedRelief). Against the relief as real
+// geometry (silhouette error: 1 is no better than the polygons' outline, 0 is perfect):
+// - closed shapes (a coarse sphere and torus) and an open one (a cylinder without caps,
+//   its seam on the outline) carve their outlines as well as with back faces culled by
+//   hand; so does a closed shape whose back faces the mapper may not cull (a clipping
+//   plane could open it), where each back fragment decides for itself;
+// - the inside of an open piece of cylinder is drawn as two-sided relief draws it, where
+//   culling by hand loses it;
+// - a camera inside a closed sphere sees its inside;
+// - TwoSidedRelief on fills the outlines again, which shows that the views test them.
+#include "ReliefMetrics.h"
+#include "ReliefScene.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkOpenGLQuadricReliefMapper.h"
+#include "vtkPlane.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkReliefTextureFilter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <functional>
+#include <iostream>
+#include <string>
+
+namespace
+{
+constexpr double DepthScale = 0.05;
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::cerr << "ERROR: " << what << "\n";
+    ++Failures;
+  }
+}
+
+enum class Faces
+{
+  Default,
+  CulledByHand,
+  Undecided, // a far clipping plane keeps the mapper from culling
+  TwoSided
+};
+
+struct Scene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkImageData> Heights;
+  vtkSmartPointer<vtkImageData> Relief;
+};
+
+ReliefMetrics::Capture Show(Scene& scene, vtkActor* actor)
+{
+  scene.Renderer->RemoveAllViewProps();
+  scene.Renderer->AddActor(actor);
+  scene.Window->Render();
+  return ReliefScene::Capture(scene.Window, scene.Renderer);
+}
+
+vtkSmartPointer<vtkActor> ReliefActor(Scene& scene, vtkPolyData* coarse, Faces faces)
+{
+  vtkNew<vtkOpenGLQuadricReliefMapper> mapper;
+  mapper->SetInputData(coarse);
+  mapper->SetHeightMapData(scene.Heights);
+  mapper->SetDepthScale(DepthScale);
+  mapper->SetSelfShadowing(false);
+  mapper->SetLinearSteps(32);
+  mapper->SetBinarySteps(6);
+  mapper->SetTwoSidedRelief(faces == Faces::TwoSided);
+  if (faces == Faces::Undecided)
+  {
+    vtkNew<vtkPlane> far;
+    far->SetOrigin(0.0, 0.0, -100.0);
+    far->SetNormal(0.0, 0.0, 1.0);
+    mapper->AddClippingPlane(far);
+  }
+  auto actor = ReliefScene::ReliefActor(mapper, "");
+  actor->GetProperty()->SetBackfaceCulling(faces == Faces::CulledByHand);
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> PlainActor(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  return ReliefScene::ReliefActor(mapper, "");
+}
+
+// Silhouette errors of the four face choices on `make`'s shape at `facets`, the truth
+// made at 256 facets, seen as `aim` sets the camera.
+struct Errors
+{
+  double Default, CulledByHand, Undecided, TwoSided;
+};
+
+Errors Measure(Scene& scene, const std::function<vtkSmartPointer<vtkPolyData>(int)>& make,
+  int facets, const std::function<void(vtkRenderer*)>& aim, const std::string& name)
+{
+  auto coarse = make(facets);
+  auto truthMesh = ReliefScene::DisplacedMesh(make(256), scene.Relief, DepthScale, 0.5);
+  aim(scene.Renderer);
+  scene.Renderer->ResetCameraClippingRange(truthMesh->GetBounds());
+  const ReliefMetrics::Capture truth = Show(scene, PlainActor(truthMesh));
+  const ReliefMetrics::Capture polygons = Show(scene, PlainActor(coarse));
+  auto error = [&](Faces faces) {
+    return ReliefMetrics::SilhouetteError(
+      Show(scene, ReliefActor(scene, coarse, faces)), polygons, truth);
+  };
+  const Errors errors = { error(Faces::Default), error(Faces::CulledByHand),
+    error(Faces::Undecided), error(Faces::TwoSided) };
+  std::cout << name << ": silhouette error by default " << errors.Default
+            << ", back faces culled by hand " << errors.CulledByHand << ", undecided "
+            << errors.Undecided << ", two-sided " << errors.TwoSided << "\n";
+  return errors;
+}
+
+std::function<void(vtkRenderer*)> From(double azimuth, double elevation, const double frame[6])
+{
+  return [=](vtkRenderer* renderer) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(0.0, -3.0, 0.0);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(30.0);
+    camera->Azimuth(azimuth);
+    camera->Elevation(elevation);
+    camera->OrthogonalizeViewUp();
+    renderer->ResetCamera(const_cast<double*>(frame));
+  };
+}
+
+void CarvedOutlines(Scene& scene)
+{
+  const double sphereFrame[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+  const double cylinderFrame[6] = { -0.4, 0.4, -0.4, 0.4, -0.5, 0.5 };
+  const double torusFrame[6] = { -0.5, 0.5, -0.15, 0.15, -0.5, 0.5 };
+  struct Case
+  {
+    std::string Name;
+    std::function<vtkSmartPointer<vtkPolyData>(int)> Make;
+    int Facets;
+    std::function<void(vtkRenderer*)> Aim;
+  };
+  const Case cases[] = {
+    { "sphere 24x12", ReliefScene::Sphere, 24, From(35.0, 30.0, sphereFrame) },
+    { "torus 32x16", ReliefScene::Torus, 32, From(70.0, -20.0, torusFrame) },
+    // azimuth 0: the seam of the cylinder lies on its right outline
+    { "cylinder without caps, 48 around",
+      [](int facets) { return ReliefScene::Cylinder(facets); }, 48,
+      From(0.0, 10.0, cylinderFrame) },
+  };
+  for (const Case& c : cases)
+  {
+    const Errors errors = Measure(scene, c.Make, c.Facets, c.Aim, c.Name);
+    Check(errors.TwoSided > 0.9, c.Name + ": two-sided relief fills the outline");
+    Check(errors.Default < errors.TwoSided - 0.3, c.Name + ": the default carves the outline");
+    Check(errors.Default <= errors.CulledByHand + 0.02,
+      c.Name + ": the default carves as well as back faces culled by hand");
+    Check(errors.Undecided <= errors.CulledByHand + 0.02,
+      c.Name + ": back fragments that decide for themselves carve as well");
+  }
+}
+
+void InsideOfAnOpenPiece(Scene& scene)
+{
+  auto piece = [](int facets) { return ReliefScene::Cylinder(facets, 150.0); };
+  auto aim = [](vtkRenderer* renderer) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(-0.8, -2.2, 2.4);
+    camera->SetFocalPoint(0.0, 0.25, 0.9);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(35.0);
+  };
+  const Errors errors = Measure(scene, piece, 32, aim, "inside of an open piece");
+  Check(errors.CulledByHand > 2.0, "the view sees the piece's inside, which culling loses");
+  Check(errors.Default <= errors.TwoSided + 0.05, "the default draws the inside");
+}
+
+void InsideAClosedSphere(Scene& scene)
+{
+  auto sphere = ReliefScene::Sphere(24);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 0.0, 0.0);
+  camera->SetFocalPoint(0.0, 1.0, 0.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(60.0);
+  scene.Renderer->ResetCameraClippingRange(sphere->GetBounds());
+  const ReliefMetrics::Capture inside = Show(scene, ReliefActor(scene, sphere, Faces::Default));
+  long covered = 0;
+  for (size_t pixel = 0; pixel < inside.EyeDepth.size(); ++pixel)
+  {
+    covered += inside.Covers(pixel) ? 1 : 0;
+  }
+  const double coverage = static_cast<double>(covered) / inside.EyeDepth.size();
+  std::cout << "inside a closed sphere: " << coverage << " of the view covered\n";
+  Check(coverage > 0.99, "a camera inside a closed sphere sees its inside");
+}
+}
+
+int TestReliefQuadricFaces(int, char*[])
+{
+  Scene scene;
+  scene.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  scene.Window->SetOffScreenRendering(1);
+  scene.Renderer = ReliefScene::LitRenderer(scene.Window, 300, 300);
+  scene.Heights = ReliefScene::ResizedHeightMap("stones_height.png", 64);
+  vtkNew<vtkReliefTextureFilter> relief;
+  relief->SetInputData(scene.Heights);
+  relief->Update();
+  scene.Relief = relief->GetOutput();
+
+  CarvedOutlines(scene);
+  InsideOfAnOpenPiece(scene);
+  InsideAClosedSphere(scene);
+  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
