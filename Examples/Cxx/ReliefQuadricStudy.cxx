@@ -148,7 +148,7 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
           << ") on a sphere of radius 0.5, a cylinder of radius 0.4 (its middle) and a torus, "
           << Facets << " facets around each, three views each, in a " << options.Width << "x"
           << options.Height
-          << " window; back faces culled. Ground truth: the shape regenerated with 256 "
+          << " window; the actors' default properties. Ground truth: the shape regenerated with 256 "
              "facets around and displaced (vtkReliefDisplacementFilter, edges of at most 0.5 "
              "texel). Silhouette error: pixels whose coverage differs from the truth's, over "
              "the same count for the bare polygons (1: no better than the polygons, 0: "

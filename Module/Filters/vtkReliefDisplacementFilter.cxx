@@ -28,6 +28,8 @@ vtkStandardNewMacro(vtkReliefDisplacementFilter);
 
 namespace
 {
+constexpr double MinimumEdgeTexels = 1e-3;
+
 // The longest triangle edge of `mesh`, in texels of a width x height image.
 double LongestEdgeInTexels(vtkPolyData* mesh, double width, double height)
 {
@@ -96,6 +98,47 @@ vtkReliefDisplacementFilter::~vtkReliefDisplacementFilter() = default;
 void vtkReliefDisplacementFilter::SetReliefData(vtkImageData* image)
 {
   this->SetInputData(1, image);
+}
+
+void vtkReliefDisplacementFilter::SetDepthScale(double depthScale)
+{
+  if (!std::isfinite(depthScale))
+  {
+    vtkWarningMacro("DepthScale " << depthScale << " is not a length; it stays "
+                                  << this->DepthScale << ".");
+    return;
+  }
+  if (depthScale < 0.0)
+  {
+    vtkWarningMacro("DepthScale " << depthScale << " is negative; using 0 (no displacement).");
+    depthScale = 0.0;
+  }
+  if (depthScale != this->DepthScale)
+  {
+    this->DepthScale = depthScale;
+    this->Modified();
+  }
+}
+
+void vtkReliefDisplacementFilter::SetMaximumEdgeTexels(double texels)
+{
+  if (std::isnan(texels))
+  {
+    vtkWarningMacro("MaximumEdgeTexels is NaN, not a length; it stays "
+                    << this->MaximumEdgeTexels << ".");
+    return;
+  }
+  if (texels < MinimumEdgeTexels)
+  {
+    vtkWarningMacro("MaximumEdgeTexels " << texels << " is below " << MinimumEdgeTexels
+                                         << " texel; using " << MinimumEdgeTexels << ".");
+    texels = MinimumEdgeTexels;
+  }
+  if (texels != this->MaximumEdgeTexels)
+  {
+    this->MaximumEdgeTexels = texels;
+    this->Modified();
+  }
 }
 
 int vtkReliefDisplacementFilter::FillInputPortInformation(int port, vtkInformation* info)

@@ -46,12 +46,19 @@ public:
   void SetReliefData(vtkImageData* image);
   ///@}
 
-  /// Model length of depth 1, as the mapper's DepthScale (default 0.05).
-  vtkSetClampMacro(DepthScale, double, 0.0, VTK_DOUBLE_MAX);
+  /**
+   * Model length of depth 1, as the mapper's DepthScale (default 0.05). A negative value
+   * becomes 0 and one that is not finite is refused (the depth stays), with a warning.
+   */
+  virtual void SetDepthScale(double depthScale);
   vtkGetMacro(DepthScale, double);
 
-  /// Longest edge allowed, in texels of the relief image (default 0.5: the ground truth).
-  vtkSetClampMacro(MaximumEdgeTexels, double, 1e-3, VTK_DOUBLE_MAX);
+  /**
+   * Longest edge allowed, in texels of the relief image (default 0.5: the ground truth;
+   * infinite: no subdivision). Values below 1e-3 become 1e-3 and NaN is refused, with a
+   * warning.
+   */
+  virtual void SetMaximumEdgeTexels(double texels);
   vtkGetMacro(MaximumEdgeTexels, double);
 
   /// Most triangles the subdivision may make (default 2^23).

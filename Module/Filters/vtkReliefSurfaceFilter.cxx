@@ -129,17 +129,89 @@ bool vtkReliefSurfaceFilter::IsClosed(vtkPolyData* mesh)
 vtkReliefSurfaceFilter::vtkReliefSurfaceFilter() = default;
 vtkReliefSurfaceFilter::~vtkReliefSurfaceFilter() = default;
 
+namespace
+{
+// Whether a cell of `cells` refers to a point id outside [0, points).
+bool RefersOutside(vtkCellArray* cells, vtkIdType points)
+{
+  auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    if (std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; }))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The cells of `cells` whose point ids all lie in [0, points); `left` counts the others.
+vtkSmartPointer<vtkCellArray> CellsInside(vtkCellArray* cells, vtkIdType points, vtkIdType& left)
+{
+  auto inside = vtkSmartPointer<vtkCellArray>::New();
+  auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    if (std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; }))
+    {
+      ++left;
+    }
+    else
+    {
+      inside->InsertNextCell(size, ids);
+    }
+  }
+  return inside;
+}
+}
+
+bool vtkReliefSurfaceFilter::RefersToMissingPoints(vtkPolyData* mesh)
+{
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  return RefersOutside(mesh->GetVerts(), points) || RefersOutside(mesh->GetLines(), points) ||
+    RefersOutside(mesh->GetPolys(), points) || RefersOutside(mesh->GetStrips(), points);
+}
+
+vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutCellsWithMissingPoints(
+  vtkPolyData* mesh)
+{
+  if (!RefersToMissingPoints(mesh))
+  {
+    return mesh;
+  }
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  vtkIdType left = 0;
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(mesh);
+  result->SetVerts(CellsInside(mesh->GetVerts(), points, left));
+  result->SetLines(CellsInside(mesh->GetLines(), points, left));
+  result->SetPolys(CellsInside(mesh->GetPolys(), points, left));
+  result->SetStrips(CellsInside(mesh->GetStrips(), points, left));
+  vtkErrorMacro("The mesh is broken: " << left << " of its cells refer to points it does not "
+                                       << "have (it has " << points
+                                       << "); they are left out. Check the file or the filter "
+                                          "that made it.");
+  return result;
+}
+
 vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::ExtractTriangles(vtkPolyData* input)
 {
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
-  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2 ||
+    tcoords->GetNumberOfTuples() < input->GetNumberOfPoints())
   {
     vtkErrorMacro("The mesh has no 2D point texture coordinates, so relief has nowhere to go "
                   "and the mesh is drawn without it. Map some first with vtkTextureMapToPlane, "
                   "vtkTextureMapToCylinder or vtkTextureMapToSphere.");
     return nullptr;
   }
-  vtkSmartPointer<vtkPolyData> mesh = input;
+  vtkSmartPointer<vtkPolyData> mesh = this->LeaveOutCellsWithMissingPoints(input);
   if (!IsTrianglesOnly(mesh))
   {
     vtkNew<vtkTriangleFilter> triangulate;

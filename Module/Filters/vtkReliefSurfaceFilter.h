@@ -15,7 +15,8 @@
  * that are not finite (NaN, infinite) are a warning: the mappers draw the triangles
  * around them without relief. So are normals without a direction (zero, not finite),
  * where the surface's own normal stands in, and points that are not finite, whose
- * triangles are left out.
+ * triangles are left out. Cells that refer to points the mesh does not have (a broken
+ * file) are an error and left out.
  */
 #ifndef vtkReliefSurfaceFilter_h
 #define vtkReliefSurfaceFilter_h
@@ -51,6 +52,9 @@ public:
   /// Whether the normal of `point` in `normals` has a direction (finite, not zero).
   static bool HasDirection(vtkDataArray* normals, vtkIdType point);
 
+  /// Whether a cell of `mesh` refers to a point id the mesh does not have (a broken file).
+  static bool RefersToMissingPoints(vtkPolyData* mesh);
+
 protected:
   vtkReliefSurfaceFilter();
   ~vtkReliefSurfaceFilter() override;
@@ -72,6 +76,10 @@ protected:
   void ReportNonFiniteTextureCoordinates(vtkPolyData* mesh);
   void ReportNormalsWithoutDirection(vtkPolyData* mesh);
   ///@}
+
+  /// The mesh without the cells that refer to points it does not have (with one error);
+  /// the mesh itself when there are none.
+  vtkSmartPointer<vtkPolyData> LeaveOutCellsWithMissingPoints(vtkPolyData* mesh);
 
   /// The mesh without the triangles that use points that are not finite (with one
   /// warning), those points moved onto a finite one; the mesh itself when all are finite.

@@ -16,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -226,6 +227,26 @@ vtkSmartPointer<vtkPolyData> WithTangents(vtkPolyData* mesh)
 }
 
 vtkReliefTangentFrameFilter::vtkReliefTangentFrameFilter() = default;
+
+void vtkReliefTangentFrameFilter::SetFeatureAngle(double degrees)
+{
+  if (std::isnan(degrees))
+  {
+    vtkWarningMacro("FeatureAngle is NaN, not an angle; it stays " << this->FeatureAngle << ".");
+    return;
+  }
+  const double clamped = std::min(std::max(degrees, 0.0), 180.0);
+  if (clamped != degrees)
+  {
+    vtkWarningMacro("FeatureAngle " << degrees << " is out of [0, 180] degrees; using "
+                                    << clamped << ".");
+  }
+  if (clamped != this->FeatureAngle)
+  {
+    this->FeatureAngle = clamped;
+    this->Modified();
+  }
+}
 vtkReliefTangentFrameFilter::~vtkReliefTangentFrameFilter() = default;
 
 int vtkReliefTangentFrameFilter::RequestData(

@@ -32,9 +32,10 @@ public:
 
   /**
    * Angle in degrees above which vtkPolyDataNormals splits an edge when normals are
-   * computed (default 30, VTK's own default).
+   * computed (default 30, VTK's own default). Values out of [0, 180] are clamped and NaN
+   * is refused, with a warning.
    */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  virtual void SetFeatureAngle(double degrees);
   vtkGetMacro(FeatureAngle, double);
 
 protected:

@@ -29,11 +29,15 @@
  * VTK's shadow-map passes (vtkShadowMapBakerPass, vtkShadowMapPass): the baker runs
  * this mapper's shader, so the shadow map holds the carved outline (s3.5).
  *
- * Give closed shapes BackfaceCullingOn() on the actor's property: past a carved
- * outline the ray must show what lies behind the shape, not the relief on the inside
- * of its far side. The polygons must enclose the relief: where the facets sag below
- * the true surface by a good part of DepthScale, the relief's outermost points cannot
- * be drawn.
+ * The actor's default properties carve outlines: past a carved outline the ray must show
+ * what lies behind the shape, not the relief on the inside of its far side, and the
+ * mapper decides which faces carry relief (see SetTwoSidedRelief()). Back faces of a
+ * closed mesh seen from outside are left out; on other meshes a back fragment whose ray,
+ * followed back toward the viewer below the quadric, comes back out of it before depth 1
+ * came in through the curved surface close by, where the front faces answer for it, and
+ * is discarded (vtkReliefQuadric.glsl, reliefQuadricBehindOutline). The polygons must
+ * enclose the relief: where the facets sag below the true surface by a good part of
+ * DepthScale, the relief's outermost points cannot be drawn.
  */
 #ifndef vtkOpenGLQuadricReliefMapper_h
 #define vtkOpenGLQuadricReliefMapper_h

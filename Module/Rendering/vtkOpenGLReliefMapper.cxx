@@ -164,12 +164,23 @@ int vtkOpenGLReliefMapper::FillInputPortInformation(int port, vtkInformation* in
 
 void vtkOpenGLReliefMapper::ComputeBounds()
 {
-  this->Superclass::ComputeBounds();
-  if (std::all_of(this->Bounds, this->Bounds + 6, [](double b) { return std::isfinite(b); }))
-  {
-    return;
-  }
   vtkPolyData* input = this->GetInput();
+  // VTK takes the bounds of the points that cells use, and reads past the points of a
+  // broken mesh whose cells refer to points it does not have
+  if (input && (input != this->CheckedInput || input->GetMTime() != this->CheckedInputTime))
+  {
+    this->CheckedInput = input;
+    this->CheckedInputTime = input->GetMTime();
+    this->InputRefersToMissingPoints = vtkReliefSurfaceFilter::RefersToMissingPoints(input);
+  }
+  if (!input || !this->InputRefersToMissingPoints)
+  {
+    this->Superclass::ComputeBounds();
+    if (std::all_of(this->Bounds, this->Bounds + 6, [](double b) { return std::isfinite(b); }))
+    {
+      return;
+    }
+  }
   vtkBoundingBox box;
   for (vtkIdType point = 0; input && point < input->GetNumberOfPoints(); ++point)
   {
@@ -802,10 +813,11 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
 bool vtkOpenGLReliefMapper::ShouldCullBackFaces(vtkRenderer* ren, vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
-  // the actor's own culling, clipping planes (which open the mesh) and two-sided relief
-  // leave the faces as VTK draws them
+  // the actor's own culling, clipping planes (which open the mesh), translucency (the far
+  // side shows through) and two-sided relief leave the faces as VTK draws them
   if (!this->DrawingRelief || this->TwoSidedRelief || property->GetBackfaceCulling() ||
-    property->GetFrontfaceCulling() || this->GetNumberOfClippingPlanes() > 0)
+    property->GetFrontfaceCulling() || this->GetNumberOfClippingPlanes() > 0 ||
+    actor->HasTranslucentPolygonalGeometry())
   {
     return false;
   }

@@ -182,7 +182,8 @@ public:
    * Off (default): the mapper decides which faces carry relief, so that past an outline
    * carved by the relief lies what is behind the shape. Front faces always do. Back faces
    * of a closed mesh (vtkReliefSurfaceFilter::IsClosed) seen from outside its bounds are
-   * not drawn: they could only show through carved outlines. Other back faces (the inside
+   * not drawn, unless the actor is translucent or the mapper clips: they could only show
+   * through carved outlines. Other back faces (the inside
    * of an open shell, a closed one seen from within) carry relief where the view ray
    * reaches them from inside the shape; the quadric frame leaves out those behind an
    * outline its front faces carve. On: every face carries relief wherever VTK draws it,
@@ -241,6 +242,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   /// The input's bounds, without points that are not finite: those are not drawn.
   void ComputeBounds() override;
+  vtkPolyData* CheckedInput = nullptr; // compared by address only
+  vtkMTimeType CheckedInputTime = 0;
+  bool InputRefersToMissingPoints = false;
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override;

@@ -16,6 +16,7 @@
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLDerivativeReliefMapper.h"
@@ -284,6 +285,30 @@ void PointsNotFinite()
   CheckSane(census, "points");
 }
 
+void CellsReferToMissingPoints()
+{
+  // a broken file: two quads name points the mesh does not have (VTK's OBJ reader passes
+  // such face indices through); the mapper leaves them out instead of reading past
+  auto grid = Grid();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell : { 10, 100 })
+  {
+    grid->GetPolys()->GetCellAtId(cell, ids);
+    ids->SetId(1, cell == 10 ? 100000 : -3);
+    grid->GetPolys()->ReplaceCellAtId(cell, ids);
+  }
+  auto mapper = NewMapper();
+  double bounds[6];
+  mapper->SetInputData(grid);
+  mapper->GetBounds(bounds);
+  Check(bounds[0] == -0.5 && bounds[1] == 0.5 && bounds[3] == 0.5, "broken cells: the bounds");
+  const Census census = Render(grid, mapper);
+  Check(census.Errors == 1 && census.Warnings == 0 && census.Says("refer to points"),
+    "broken cells: one error");
+  Check(census.Relief > 2 * HalfCovered, "broken cells: the other cells keep their relief");
+  CheckSane(census, "broken cells");
+}
+
 void MeshWithoutNormals()
 {
   auto grid = Grid();
@@ -481,6 +506,7 @@ const struct
   { "NormalsWithoutDirection", NormalsWithoutDirection },
   { "MeshWithoutNormals", MeshWithoutNormals },
   { "PointsNotFinite", PointsNotFinite },
+  { "CellsReferToMissingPoints", CellsReferToMissingPoints },
   { "NoTextureCoordinates", NoTextureCoordinates },
   { "NoPolygons", NoPolygons },
   { "EmptyMesh", EmptyMesh },

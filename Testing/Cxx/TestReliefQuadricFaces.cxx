@@ -7,7 +7,8 @@
 //   plane could open it), where each back fragment decides for itself;
 // - the inside of an open piece of cylinder is drawn as two-sided relief draws it, where
 //   culling by hand loses it;
-// - a camera inside a closed sphere sees its inside;
+// - a camera inside a closed sphere sees its inside, and through a translucent one its far
+//   side shows;
 // - TwoSidedRelief on fills the outlines again, which shows that the views test them.
 #include "ReliefMetrics.h"
 #include "ReliefScene.h"
@@ -25,6 +26,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -205,6 +207,33 @@ void InsideAClosedSphere(Scene& scene)
   std::cout << "inside a closed sphere: " << coverage << " of the view covered\n";
   Check(coverage > 0.99, "a camera inside a closed sphere sees its inside");
 }
+
+void TranslucentShapes(Scene& scene)
+{
+  // through a translucent closed sphere its far side shows: the mapper draws its back
+  // faces, as VTK does, and the image differs from the one with back faces culled by hand
+  auto sphere = ReliefScene::Sphere(24);
+  const double frame[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+  From(35.0, 30.0, frame)(scene.Renderer);
+  scene.Renderer->ResetCameraClippingRange(frame[0], frame[1], frame[2], frame[3], frame[4],
+    frame[5]);
+  auto translucent = [&](Faces faces) {
+    auto actor = ReliefActor(scene, sphere, faces);
+    actor->GetProperty()->SetOpacity(0.5);
+    return Show(scene, actor).Rgb;
+  };
+  const std::vector<float> drawn = translucent(Faces::Default);
+  const std::vector<float> culled = translucent(Faces::CulledByHand);
+  double difference = 0.0;
+  for (size_t k = 0; k < drawn.size(); ++k)
+  {
+    difference += std::abs(drawn[k] - culled[k]);
+  }
+  difference /= static_cast<double>(drawn.size());
+  std::cout << "translucent sphere: mean difference " << difference
+            << " from back faces culled by hand\n";
+  Check(difference > 0.001, "a translucent closed sphere shows its far side");
+}
 }
 
 int TestReliefQuadricFaces(int, char*[])
@@ -222,5 +251,6 @@ int TestReliefQuadricFaces(int, char*[])
   CarvedOutlines(scene);
   InsideOfAnOpenPiece(scene);
   InsideAClosedSphere(scene);
+  TranslucentShapes(scene);
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace
@@ -321,6 +322,33 @@ TEST(ReliefDisplacementFilter, ReliefWithoutDepthsIsAnErrorAndPassesTheMeshThrou
   vtkPolyData* mesh = DisplaceWithOneError(
     filter, square, DepthImage(4, 4, [](int, int) { return 1.0; }, 3), "vtkReliefTextureFilter");
   EXPECT_EQ(mesh->GetNumberOfPoints(), square->GetNumberOfPoints());
+}
+
+TEST(ReliefDisplacementFilter, SettersRefuseWhatIsNotALength)
+{
+  vtkNew<vtkReliefDisplacementFilter> filter;
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::WarningEvent, recorder);
+  filter->SetDepthScale(0.2);
+  for (double depthScale : { std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    filter->SetDepthScale(depthScale);
+    EXPECT_EQ(filter->GetDepthScale(), 0.2) << depthScale;
+  }
+  filter->SetDepthScale(-1.0);
+  EXPECT_EQ(filter->GetDepthScale(), 0.0);
+  filter->SetMaximumEdgeTexels(2.0);
+  filter->SetMaximumEdgeTexels(std::nan(""));
+  EXPECT_EQ(filter->GetMaximumEdgeTexels(), 2.0);
+  filter->SetMaximumEdgeTexels(0.0);
+  EXPECT_EQ(filter->GetMaximumEdgeTexels(), 1e-3);
+  EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 5);
+  EXPECT_TRUE(recorder->AnyMessageContains("DepthScale") &&
+    recorder->AnyMessageContains("MaximumEdgeTexels"));
+  // no subdivision at all: accepted as it is
+  filter->SetMaximumEdgeTexels(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(filter->GetMaximumEdgeTexels(), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 5);
 }
 
 TEST(ReliefDisplacementFilter, ReportsProgressFromStartToEnd)

@@ -422,6 +422,14 @@ TEST(ReliefSafetyRadiusFilter, NegativeToleranceBecomesZeroWithAWarning)
   filter->SetErrorTolerance(std::nan(""));
   EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 2);
   EXPECT_EQ(filter->GetErrorTolerance(), 0.0);
+  // more than the whole depth, up to infinity, is the whole depth
+  for (double tolerance : { 1.5, std::numeric_limits<double>::infinity() })
+  {
+    filter->SetErrorTolerance(tolerance);
+    EXPECT_EQ(filter->GetErrorTolerance(), 1.0);
+  }
+  EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 4);
+  filter->SetErrorTolerance(0.0);
   // the clamped filter computes the radii of e = 0
   const DepthField field = Waves(24, 0.2f);
   filter->SetInputData(DepthImage(field));

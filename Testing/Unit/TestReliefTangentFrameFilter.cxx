@@ -213,6 +213,80 @@ TEST(ReliefTangentFrameFilter, TrianglesWithoutTextureAreaGiveAFiniteFrame)
   }
 }
 
+TEST(ReliefTangentFrameFilter, FeatureAnglesOutOfRangeAreClampedAndNaNRefused)
+{
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::WarningEvent, recorder);
+  filter->SetFeatureAngle(45.0);
+  filter->SetFeatureAngle(std::nan(""));
+  EXPECT_EQ(filter->GetFeatureAngle(), 45.0);
+  filter->SetFeatureAngle(200.0);
+  EXPECT_EQ(filter->GetFeatureAngle(), 180.0);
+  filter->SetFeatureAngle(-5.0);
+  EXPECT_EQ(filter->GetFeatureAngle(), 0.0);
+  EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 3);
+  EXPECT_TRUE(recorder->AnyMessageContains("FeatureAngle"));
+}
+
+TEST(ReliefTangentFrameFilter, NormalsWithoutDirectionAreTheSurfacesWithOneWarning)
+{
+  // the rectangle's normals: one zero, one NaN; the frame holds the plane's +z there
+  auto rectangle = Rectangle(2.0, 1.0);
+  vtkDataArray* normals = rectangle->GetPointData()->GetNormals();
+  normals->SetTuple3(0, 0.0, 0.0, 0.0);
+  normals->SetTuple3(1, std::nan(""), 0.0, 0.0);
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::WarningEvent, recorder);
+  vtkPolyData* frame = Frame(filter, rectangle);
+  EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 1);
+  EXPECT_TRUE(recorder->AnyMessageContains("without a direction"));
+  vtkDataArray* framed = frame->GetPointData()->GetNormals();
+  for (vtkIdType point = 0; point < framed->GetNumberOfTuples(); ++point)
+  {
+    EXPECT_NEAR(std::abs(framed->GetComponent(point, 2)), 1.0, 1e-6) << point;
+  }
+  EXPECT_TRUE(std::isnan(normals->GetComponent(1, 0))); // the input keeps its own
+}
+
+TEST(ReliefTangentFrameFilter, TextureCoordinatesNotFiniteSpoilOnlyTheirOwnTriangles)
+{
+  // a 4x4-quad plane; one corner point's coordinates NaN: every point keeps a finite,
+  // unit frame, and the points of the triangles away from it the plane's exact scale
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(4, 4);
+  plane->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(plane->GetOutput());
+  mesh->GetPointData()->GetTCoords()->SetTuple2(0, std::nan(""), 0.0);
+  vtkNew<vtkReliefTangentFrameFilter> filter;
+  vtkNew<ReliefEventRecorder> recorder;
+  filter->AddObserver(vtkCommand::WarningEvent, recorder);
+  vtkPolyData* frame = Frame(filter, mesh);
+  EXPECT_EQ(recorder->Count(vtkCommand::WarningEvent), 1);
+  EXPECT_TRUE(recorder->AnyMessageContains("not finite"));
+  vtkDataArray* tangents = frame->GetPointData()->GetTangents();
+  vtkDataArray* scale = Scale(frame);
+  for (vtkIdType point = 0; point < frame->GetNumberOfPoints(); ++point)
+  {
+    double tangent[3];
+    tangents->GetTuple(point, tangent);
+    EXPECT_NEAR(vtkMath::Norm(tangent), 1.0, 1e-6) << point;
+    EXPECT_TRUE(std::isfinite(scale->GetComponent(point, 0)) &&
+      std::isfinite(scale->GetComponent(point, 1)))
+      << point;
+    double position[3];
+    frame->GetPoint(point, position);
+    if (position[0] > -0.2 || position[1] > -0.2) // no triangle of point 0's
+    {
+      EXPECT_NEAR(tangent[0], 1.0, 1e-6) << point;
+      EXPECT_NEAR(scale->GetComponent(point, 0), 1.0, 1e-6) << point;
+      EXPECT_NEAR(scale->GetComponent(point, 1), 1.0, 1e-6) << point;
+    }
+  }
+}
+
 TEST(ReliefTangentFrameFilter, GivenTangentsAreMadeUnitAndPerpendicular)
 {
   // long tangents tilted out of the plane
