@@ -192,13 +192,16 @@ int vtkLocalQuadricFilter::RequestData(
   frame->Update();
   if (!frame->GetHasSurface())
   {
-    output->ShallowCopy(input);
+    output->ShallowCopy(frame->GetOutput()); // the mesh, its broken cells left out
     return 1;
   }
   vtkPolyData* mesh = frame->GetOutput();
   this->UpdateProgress(0.3);
 
-  std::vector<vtkIdType> merged = vtkReliefCoincidentPoints(mesh);
+  // a texture seam's copies of a point share one neighbourhood, the sides of a crease that
+  // the normals split keep their own (vtkReliefTangentFrameFilter's feature angle)
+  std::vector<vtkIdType> merged = vtkReliefCoincidentPoints(
+    mesh, mesh->GetPointData()->GetNormals(), frame->GetFeatureAngle());
   if (merged.empty()) // a point is not finite: no point stands for another
   {
     merged.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));

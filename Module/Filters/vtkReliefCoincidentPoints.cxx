@@ -1,12 +1,35 @@
 #include "vtkReliefCoincidentPoints.h"
 
+#include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 
 #include <cmath>
+#include <unordered_map>
 
-std::vector<vtkIdType> vtkReliefCoincidentPoints(vtkPolyData* mesh)
+namespace
+{
+// Whether the normals of points a and b are at most `cosine` apart (both without a
+// direction count as alike).
+bool Alike(vtkDataArray* normals, vtkIdType a, vtkIdType b, double cosine)
+{
+  double na[3], nb[3];
+  normals->GetTuple(a, na);
+  normals->GetTuple(b, nb);
+  const double la = vtkMath::Norm(na);
+  const double lb = vtkMath::Norm(nb);
+  if (!(la > 0.0) || !(lb > 0.0) || !std::isfinite(la) || !std::isfinite(lb))
+  {
+    return !(la > 0.0 && std::isfinite(la)) && !(lb > 0.0 && std::isfinite(lb));
+  }
+  return vtkMath::Dot(na, nb) >= cosine * la * lb;
+}
+}
+
+std::vector<vtkIdType> vtkReliefCoincidentPoints(
+  vtkPolyData* mesh, vtkDataArray* normals, double maximumAngle)
 {
   const vtkIdType count = mesh->GetNumberOfPoints();
   for (vtkIdType id = 0; id < count; ++id)
@@ -26,5 +49,31 @@ std::vector<vtkIdType> vtkReliefCoincidentPoints(vtkPolyData* mesh)
   locator->SetDataSet(mesh);
   locator->BuildLocator();
   locator->MergePoints(1e-9 * mesh->GetLength(), merged.data());
-  return merged;
+  if (!normals || normals->GetNumberOfTuples() < count || maximumAngle >= 180.0)
+  {
+    return merged;
+  }
+  // within each group at one position, the copies whose normals differ stand apart: each
+  // point goes to the first of its group (in id order) that stands for itself and is alike
+  const double cosine = std::cos(vtkMath::RadiansFromDegrees(maximumAngle));
+  std::unordered_map<vtkIdType, std::vector<vtkIdType>> standIns; // per position
+  std::vector<vtkIdType> split(merged.size());
+  for (vtkIdType id = 0; id < count; ++id)
+  {
+    std::vector<vtkIdType>& candidates = standIns[merged[id]];
+    split[id] = id;
+    for (vtkIdType candidate : candidates)
+    {
+      if (Alike(normals, id, candidate, cosine))
+      {
+        split[id] = candidate;
+        break;
+      }
+    }
+    if (split[id] == id)
+    {
+      candidates.push_back(id);
+    }
+  }
+  return split;
 }

@@ -3,7 +3,9 @@
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -17,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -76,6 +79,8 @@ bool vtkReliefSurfaceFilter::IsClosed(vtkPolyData* mesh)
   std::unordered_map<std::uint64_t, std::uint64_t> runs;
   const std::uint64_t stride = static_cast<std::uint64_t>(canonical.size());
   double volume = 0.0;
+  double centre[3];
+  mesh->GetPoint(0, centre);
   std::vector<vtkIdType> corners;
   auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
   for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
@@ -102,14 +107,20 @@ bool vtkReliefSurfaceFilter::IsClosed(vtkPolyData* mesh)
       const std::uint64_t high = static_cast<std::uint64_t>(std::max(from, to));
       runs[low * stride + high] += from < to ? 1 : Backward;
     }
-    double origin[3], a[3], b[3];
-    mesh->GetPoint(corners[0], origin);
+    // the polygon's fan, as tetrahedra with the mesh's first point: an apex on the mesh
+    // keeps the sign of a small mesh far from the origin
+    double corner[3], a[3], b[3];
+    mesh->GetPoint(corners[0], corner);
+    vtkMath::Subtract(corner, centre, corner);
     for (vtkIdType k = 1; k + 1 < size; ++k)
     {
       mesh->GetPoint(corners[k], a);
       mesh->GetPoint(corners[k + 1], b);
-      volume += origin[0] * (a[1] * b[2] - a[2] * b[1]) - origin[1] * (a[0] * b[2] - a[2] * b[0]) +
-        origin[2] * (a[0] * b[1] - a[1] * b[0]);
+      vtkMath::Subtract(a, centre, a);
+      vtkMath::Subtract(b, centre, b);
+      double across[3];
+      vtkMath::Cross(a, b, across);
+      volume += vtkMath::Dot(corner, across);
     }
   }
   if (runs.empty() || !(volume > 0.0))
@@ -148,26 +159,50 @@ bool RefersOutside(vtkCellArray* cells, vtkIdType points)
   return false;
 }
 
-// The cells of `cells` whose point ids all lie in [0, points); `left` counts the others.
-vtkSmartPointer<vtkCellArray> CellsInside(vtkCellArray* cells, vtkIdType points, vtkIdType& left)
+// `mesh` without the cells that `leave` picks by their point ids, its cell data kept in
+// step (vtkPolyData numbers its cells verts, lines, polys, strips); `left` counts them.
+vtkSmartPointer<vtkPolyData> WithoutCells(vtkPolyData* mesh,
+  const std::function<bool(vtkIdType, const vtkIdType*)>& leave, vtkIdType& left)
 {
-  auto inside = vtkSmartPointer<vtkCellArray>::New();
-  auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  vtkCellData* cellData = mesh->GetCellData();
+  vtkNew<vtkCellData> keptData;
+  keptData->CopyAllocate(cellData, mesh->GetNumberOfCells());
+  vtkCellArray* all[4] = { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(),
+    mesh->GetStrips() };
+  vtkSmartPointer<vtkCellArray> kept[4];
+  vtkIdType cell = 0;
+  vtkIdType keptCells = 0;
+  for (int kind = 0; kind < 4; ++kind)
   {
-    vtkIdType size;
-    const vtkIdType* ids;
-    iterator->GetCurrentCell(size, ids);
-    if (std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; }))
+    kept[kind] = vtkSmartPointer<vtkCellArray>::New();
+    auto iterator = vtk::TakeSmartPointer(all[kind]->NewIterator());
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
     {
-      ++left;
-    }
-    else
-    {
-      inside->InsertNextCell(size, ids);
+      vtkIdType size;
+      const vtkIdType* ids;
+      iterator->GetCurrentCell(size, ids);
+      if (leave(size, ids))
+      {
+        ++left;
+      }
+      else
+      {
+        kept[kind]->InsertNextCell(size, ids);
+        keptData->CopyData(cellData, cell, keptCells++);
+      }
+      ++cell;
     }
   }
-  return inside;
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(mesh->GetPoints());
+  result->GetPointData()->ShallowCopy(mesh->GetPointData());
+  result->GetFieldData()->ShallowCopy(mesh->GetFieldData());
+  result->SetVerts(kept[0]);
+  result->SetLines(kept[1]);
+  result->SetPolys(kept[2]);
+  result->SetStrips(kept[3]);
+  result->GetCellData()->ShallowCopy(keptData);
+  return result;
 }
 }
 
@@ -187,12 +222,12 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutCellsWithMissingPoi
   }
   const vtkIdType points = mesh->GetNumberOfPoints();
   vtkIdType left = 0;
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(mesh);
-  result->SetVerts(CellsInside(mesh->GetVerts(), points, left));
-  result->SetLines(CellsInside(mesh->GetLines(), points, left));
-  result->SetPolys(CellsInside(mesh->GetPolys(), points, left));
-  result->SetStrips(CellsInside(mesh->GetStrips(), points, left));
+  auto result = WithoutCells(
+    mesh,
+    [points](vtkIdType size, const vtkIdType* ids) {
+      return std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; });
+    },
+    left);
   vtkErrorMacro("The mesh is broken: " << left << " of its cells refer to points it does not "
                                        << "have (it has " << points
                                        << "); they are left out. Check the file or the filter "
@@ -200,36 +235,42 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutCellsWithMissingPoi
   return result;
 }
 
-vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::ExtractTriangles(vtkPolyData* input)
+vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::ExtractTriangles(vtkPolyData* mesh)
 {
-  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
-  if (!tcoords || tcoords->GetNumberOfComponents() < 2 ||
-    tcoords->GetNumberOfTuples() < input->GetNumberOfPoints())
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
   {
     vtkErrorMacro("The mesh has no 2D point texture coordinates, so relief has nowhere to go "
                   "and the mesh is drawn without it. Map some first with vtkTextureMapToPlane, "
                   "vtkTextureMapToCylinder or vtkTextureMapToSphere.");
     return nullptr;
   }
-  vtkSmartPointer<vtkPolyData> mesh = this->LeaveOutCellsWithMissingPoints(input);
-  if (!IsTrianglesOnly(mesh))
+  if (tcoords->GetNumberOfTuples() < mesh->GetNumberOfPoints())
+  {
+    vtkErrorMacro("The mesh's texture coordinates cover " << tcoords->GetNumberOfTuples()
+                  << " of its " << mesh->GetNumberOfPoints()
+                  << " points, so the mesh is drawn without relief. Give one pair a point.");
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> triangles = mesh;
+  if (!IsTrianglesOnly(triangles))
   {
     vtkNew<vtkTriangleFilter> triangulate;
-    triangulate->SetInputData(mesh);
+    triangulate->SetInputData(triangles);
     triangulate->PassVertsOff();
     triangulate->PassLinesOff();
     triangulate->Update();
-    mesh = triangulate->GetOutput();
+    triangles = triangulate->GetOutput();
   }
-  if (mesh->GetNumberOfPolys() == 0)
+  triangles = this->LeaveOutNonFinitePoints(triangles);
+  if (triangles->GetNumberOfPolys() == 0)
   {
     vtkErrorMacro("The mesh has no polygons: relief is drawn on polygons only. Give a "
                   "surface (vtkGeometryFilter extracts one from other datasets).");
     return nullptr;
   }
-  this->ReportNonFiniteTextureCoordinates(mesh);
-  this->ReportNormalsWithoutDirection(mesh);
-  return this->LeaveOutNonFinitePoints(mesh);
+  this->ReportNonFiniteTextureCoordinates(triangles);
+  return this->WithUsableNormals(triangles);
 }
 
 bool vtkReliefSurfaceFilter::HasDirection(vtkDataArray* normals, vtkIdType point)
@@ -240,16 +281,39 @@ bool vtkReliefSurfaceFilter::HasDirection(vtkDataArray* normals, vtkIdType point
   return std::isfinite(length) && length > 0.0;
 }
 
-void vtkReliefSurfaceFilter::ReportNormalsWithoutDirection(vtkPolyData* mesh)
+vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::WithUsableNormals(vtkPolyData* mesh)
 {
-  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkPointData* pointData = mesh->GetPointData();
+  vtkDataArray* normals = pointData->GetNormals();
+  vtkDataArray* tangents = pointData->GetTangents();
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  auto tooShort = [points](vtkDataArray* array) {
+    return array && (array->GetNumberOfTuples() < points || array->GetNumberOfComponents() < 3);
+  };
+  if (tooShort(normals) || tooShort(tangents))
+  {
+    vtkWarningMacro("The mesh's " << (tooShort(normals) ? "normals" : "tangents")
+                                  << " do not give three numbers for each of its " << points
+                                  << " points: they are left out, and computed where needed.");
+    auto result = vtkSmartPointer<vtkPolyData>::New();
+    result->ShallowCopy(mesh);
+    if (tooShort(normals))
+    {
+      result->GetPointData()->SetNormals(nullptr);
+    }
+    if (tooShort(tangents))
+    {
+      result->GetPointData()->SetTangents(nullptr);
+    }
+    return result;
+  }
   if (!normals)
   {
-    return;
+    return mesh;
   }
   vtkIdType count = 0;
   vtkIdType first = -1;
-  for (vtkIdType point = 0; point < normals->GetNumberOfTuples(); ++point)
+  for (vtkIdType point = 0; point < points; ++point)
   {
     if (!HasDirection(normals, point))
     {
@@ -258,12 +322,13 @@ void vtkReliefSurfaceFilter::ReportNormalsWithoutDirection(vtkPolyData* mesh)
   }
   if (count > 0)
   {
-    vtkWarningMacro(<< count << " of the mesh's " << normals->GetNumberOfTuples()
-                    << " points (the first: point " << first
+    vtkWarningMacro(<< count << " of the mesh's " << points << " points (the first: point "
+                    << first
                     << ") have normals without a direction (zero or not finite): the surface's "
                        "own normal is used there. Give unit normals, or none to have them "
                        "computed.");
   }
+  return mesh;
 }
 
 vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutNonFinitePoints(vtkPolyData* mesh)
@@ -313,6 +378,14 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutNonFinitePoints(vtk
   }
   const double size = finiteBox.IsValid() ? finiteBox.GetDiagonalLength() : 0.0;
   stand[0] += size > 0.0 ? 1e-6 * size : 1e-6;
+  vtkIdType left = 0;
+  auto result = WithoutCells(
+    mesh,
+    [mesh, &isFinite](vtkIdType size, const vtkIdType* ids) {
+      return std::any_of(
+        ids, ids + size, [mesh, &isFinite](vtkIdType id) { return !isFinite(mesh->GetPoint(id)); });
+    },
+    left);
   vtkNew<vtkPoints> points;
   points->DeepCopy(mesh->GetPoints());
   for (vtkIdType point = 0; point < points->GetNumberOfPoints(); ++point)
@@ -322,27 +395,7 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutNonFinitePoints(vtk
       points->SetPoint(point, stand);
     }
   }
-  vtkNew<vtkCellArray> kept;
-  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    polys->GetCurrentCell(size, ids);
-    bool usable = true;
-    for (vtkIdType corner = 0; corner < size; ++corner)
-    {
-      usable = usable && isFinite(mesh->GetPoint(ids[corner]));
-    }
-    if (usable)
-    {
-      kept->InsertNextCell(size, ids);
-    }
-  }
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(mesh);
   result->SetPoints(points);
-  result->SetPolys(kept);
   return result;
 }
 
@@ -390,9 +443,11 @@ int vtkReliefSurfaceFilter::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  vtkSmartPointer<vtkPolyData> triangles = this->ExtractTriangles(input);
+  // without a surface the output is the mesh drawn plainly: its broken cells left out too
+  vtkSmartPointer<vtkPolyData> mesh = this->LeaveOutCellsWithMissingPoints(input);
+  vtkSmartPointer<vtkPolyData> triangles = this->ExtractTriangles(mesh);
   this->HasSurface = triangles != nullptr;
-  output->ShallowCopy(this->HasSurface ? triangles.Get() : input);
+  output->ShallowCopy(this->HasSurface ? triangles.Get() : mesh.Get());
   if (this->HasSurface)
   {
     NameAttributes(output);

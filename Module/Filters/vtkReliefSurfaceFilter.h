@@ -62,27 +62,31 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * The input's triangles with their point data, or nullptr after reporting why relief
-   * cannot be drawn on it (no 2D texture coordinates, no polygons).
+   * The triangles of `mesh` (whose cells refer to its own points: see
+   * LeaveOutCellsWithMissingPoints) with their point data, or nullptr after reporting why
+   * relief cannot be drawn on it (no 2D texture coordinates, no polygons).
    */
-  vtkSmartPointer<vtkPolyData> ExtractTriangles(vtkPolyData* input);
+  vtkSmartPointer<vtkPolyData> ExtractTriangles(vtkPolyData* mesh);
 
   /// Names the output's unnamed texture coordinates and normals (copies; the input stays).
   static void NameAttributes(vtkPolyData* output);
 
-  ///@{
-  /// One warning each when some of the mesh's texture coordinates are not finite or some
-  /// of its normals have no direction (zero or not finite).
+  /// One warning when some of the mesh's texture coordinates are not finite.
   void ReportNonFiniteTextureCoordinates(vtkPolyData* mesh);
-  void ReportNormalsWithoutDirection(vtkPolyData* mesh);
-  ///@}
+
+  /**
+   * The mesh, its normals or tangents left out (with one warning) when they do not give
+   * three numbers a point; one warning when some normals have no direction (zero, not
+   * finite), which the mappers replace by the surface's own.
+   */
+  vtkSmartPointer<vtkPolyData> WithUsableNormals(vtkPolyData* mesh);
 
   /// The mesh without the cells that refer to points it does not have (with one error);
   /// the mesh itself when there are none.
   vtkSmartPointer<vtkPolyData> LeaveOutCellsWithMissingPoints(vtkPolyData* mesh);
 
-  /// The mesh without the triangles that use points that are not finite (with one
-  /// warning), those points moved onto a finite one; the mesh itself when all are finite.
+  /// The mesh without the cells that use points that are not finite (with one warning),
+  /// those points moved next to a finite one; the mesh itself when all are finite.
   vtkSmartPointer<vtkPolyData> LeaveOutNonFinitePoints(vtkPolyData* mesh);
 
   bool HasSurface = false;

@@ -228,6 +228,8 @@ vtkSmartPointer<vtkPolyData> WithTangents(vtkPolyData* mesh)
 
 vtkReliefTangentFrameFilter::vtkReliefTangentFrameFilter() = default;
 
+vtkReliefTangentFrameFilter::~vtkReliefTangentFrameFilter() = default;
+
 void vtkReliefTangentFrameFilter::SetFeatureAngle(double degrees)
 {
   if (std::isnan(degrees))
@@ -247,18 +249,19 @@ void vtkReliefTangentFrameFilter::SetFeatureAngle(double degrees)
     this->Modified();
   }
 }
-vtkReliefTangentFrameFilter::~vtkReliefTangentFrameFilter() = default;
 
 int vtkReliefTangentFrameFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  vtkSmartPointer<vtkPolyData> mesh = this->ExtractTriangles(input);
+  // without a surface the output is the mesh drawn plainly: its broken cells left out too
+  vtkSmartPointer<vtkPolyData> valid = this->LeaveOutCellsWithMissingPoints(input);
+  vtkSmartPointer<vtkPolyData> mesh = this->ExtractTriangles(valid);
   this->HasSurface = mesh != nullptr;
   if (!this->HasSurface)
   {
-    output->ShallowCopy(input);
+    output->ShallowCopy(valid);
     return 1;
   }
   this->UpdateProgress(0.25);

@@ -32,7 +32,9 @@ bool vtkOpenGLDerivativeReliefMapper::UpdateReliefSurface()
   this->SurfaceFilter->Update();
   if (!this->SurfaceFilter->GetHasSurface())
   {
-    return false; // the filter has said why, once per change of the mesh
+    // the filter has said why, once per change of the mesh; drawn plainly as it passes it
+    this->CurrentInput = this->SurfaceFilter->GetOutput();
+    return false;
   }
   vtkPolyData* surface = this->SurfaceFilter->GetOutput();
   this->DrawnSurface = surface;

@@ -67,13 +67,11 @@ bool vtkOpenGLQuadricReliefMapper::UpdateReliefSurface()
   // again only when the mesh changes
   this->QuadricFilter->SetInputData(this->CurrentInput);
   this->QuadricFilter->Update();
+  // without relief (no texture coordinates or polygons: the filter has said so) the mesh
+  // is drawn plainly, as the filter passes it
   vtkPolyData* framed = this->QuadricFilter->GetOutput();
-  if (!framed->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName()))
-  {
-    return false; // no texture coordinates or polygons: the filter has said so
-  }
   this->CurrentInput = framed;
-  return true;
+  return framed->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName()) != nullptr;
 }
 
 void vtkOpenGLQuadricReliefMapper::MapReliefAttributes(bool relief)

@@ -1,8 +1,8 @@
 #include "vtkOpenGLReliefMapper.h"
 
 #include "vtkActor.h"
-#include "vtkBoundingBox.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkConeStepMapFilter.h"
@@ -319,7 +319,9 @@ void vtkOpenGLReliefMapper::SetSafetyRadiusTolerance(double tolerance)
 
 void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
 {
-  if (depthScale != this->DepthScale)
+  const bool same = depthScale == this->DepthScale ||
+    (std::isnan(depthScale) && std::isnan(this->DepthScale));
+  if (!same)
   {
     this->DepthScale = depthScale;
     this->WarnedDepthScale = false;
@@ -409,12 +411,9 @@ bool vtkOpenGLReliefMapper::UpdateReliefSurface()
   // filter, reported through the mapper once per change of the mesh
   this->TangentFrame->SetInputData(this->CurrentInput);
   this->TangentFrame->Update();
-  if (!this->TangentFrame->GetHasSurface())
-  {
-    return false;
-  }
+  // without relief the mesh is drawn plainly, as the filter passes it: broken cells left out
   this->CurrentInput = this->TangentFrame->GetOutput();
-  return true;
+  return this->TangentFrame->GetHasSurface();
 }
 
 bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
@@ -767,10 +766,15 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   this->MapReliefAttributes(relief);
   this->DrawnDepthScale = relief ? this->UsableDepthScale(actor) : 0.0;
   this->Superclass::RenderPieceStart(ren, actor);
-  this->CullingBackFaces = this->ShouldCullBackFaces(ren, actor);
-  if (this->CullingBackFaces)
+  this->BackFacesLeftOut = this->ShouldCullBackFaces(ren, actor);
+  if (this->BackFacesLeftOut)
   {
+    // what the render passes around it had, restored in RenderPieceFinish
     vtkOpenGLState* state = static_cast<vtkOpenGLRenderer*>(ren)->GetState();
+    this->SavedCullFace = state->GetEnumState(GL_CULL_FACE);
+    GLint mode = GL_BACK;
+    state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &mode);
+    this->SavedCullFaceMode = static_cast<unsigned int>(mode);
     state->vtkglEnable(GL_CULL_FACE);
     state->vtkglCullFace(GL_BACK);
   }
@@ -802,10 +806,11 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
     }
     this->DepthTexture->Deactivate();
   }
-  if (this->CullingBackFaces)
+  if (this->BackFacesLeftOut)
   {
-    static_cast<vtkOpenGLRenderer*>(ren)->GetState()->vtkglDisable(GL_CULL_FACE);
-    this->CullingBackFaces = false;
+    vtkOpenGLState* state = static_cast<vtkOpenGLRenderer*>(ren)->GetState();
+    state->vtkglCullFace(this->SavedCullFaceMode);
+    state->SetEnumState(GL_CULL_FACE, this->SavedCullFace);
   }
   this->Superclass::RenderPieceFinish(ren, actor);
 }
@@ -818,6 +823,11 @@ bool vtkOpenGLReliefMapper::ShouldCullBackFaces(vtkRenderer* ren, vtkActor* acto
   if (!this->DrawingRelief || this->TwoSidedRelief || property->GetBackfaceCulling() ||
     property->GetFrontfaceCulling() || this->GetNumberOfClippingPlanes() > 0 ||
     actor->HasTranslucentPolygonalGeometry())
+  {
+    return false;
+  }
+  // a mirroring actor matrix turns the windings, and with them the faces, round
+  if (actor->GetMatrix()->Determinant() <= 0.0)
   {
     return false;
   }
@@ -1132,6 +1142,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SelfShadowing: " << this->SelfShadowing << "\n";
   os << indent << "DepthCorrection: " << this->DepthCorrection << "\n";
   os << indent << "TwoSidedRelief: " << this->TwoSidedRelief << "\n";
+  os << indent << "BackFacesLeftOut: " << this->BackFacesLeftOut << "\n";
   os << indent << "DisplayMode: " << (this->DisplayMode == SAMPLE_COUNT ? "SampleCount" : "Shaded")
      << "\n";
   os << indent << "HeightMap: " << this->GetHeightMap() << "\n";

@@ -195,6 +195,9 @@ public:
   vtkBooleanMacro(TwoSidedRelief, bool);
   ///@}
 
+  /// Whether the last render left out the back faces (a closed mesh seen from outside).
+  vtkGetMacro(BackFacesLeftOut, bool);
+
   enum DisplayModes
   {
     SHADED = 0,
@@ -242,9 +245,6 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   /// The input's bounds, without points that are not finite: those are not drawn.
   void ComputeBounds() override;
-  vtkPolyData* CheckedInput = nullptr; // compared by address only
-  vtkMTimeType CheckedInputTime = 0;
-  bool InputRefersToMissingPoints = false;
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override;
@@ -333,7 +333,12 @@ protected:
   bool SurfaceClosed = false; // of the surface drawn, as of SurfaceClosedTime
   vtkMTimeType SurfaceClosedTime = 0;
   vtkPolyData* SurfaceClosedMesh = nullptr; // compared by address only
-  bool CullingBackFaces = false; // this render enabled GL's back-face culling
+  vtkPolyData* CheckedInput = nullptr; // the input ComputeBounds checked, by address only
+  vtkMTimeType CheckedInputTime = 0;
+  bool InputRefersToMissingPoints = false;
+  bool BackFacesLeftOut = false; // the last render culled back faces (GL state saved)
+  bool SavedCullFace = false;
+  unsigned int SavedCullFaceMode = 0;
   bool WarnedMissingHeightMap = false;
   bool WarnedDepthScale = false;
   double DrawnDepthScale = 0.0; // what this render's shaders use: UsableDepthScale()

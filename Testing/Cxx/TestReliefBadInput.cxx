@@ -31,6 +31,7 @@
 #include "vtkRendererCollection.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <iostream>
@@ -301,7 +302,9 @@ void CellsReferToMissingPoints()
   double bounds[6];
   mapper->SetInputData(grid);
   mapper->GetBounds(bounds);
-  Check(bounds[0] == -0.5 && bounds[1] == 0.5 && bounds[3] == 0.5, "broken cells: the bounds");
+  Check(bounds[0] == -0.5 && bounds[1] == 0.5 && bounds[2] == -0.5 && bounds[3] == 0.5 &&
+      bounds[4] == 0.0 && bounds[5] == 0.0,
+    "broken cells: the bounds are the square's");
   const Census census = Render(grid, mapper);
   Check(census.Errors == 1 && census.Warnings == 0 && census.Says("refer to points"),
     "broken cells: one error");
@@ -330,8 +333,7 @@ void CheckDegenerateLeftHalf(vtkPolyData* grid, const std::string& what)
   if (MapperName == "Derivative")
   {
     // the derivative frame sees that the triangle holds no texture mapping
-    Check(census.NoSearch > HalfCovered || census.Covered < 2 * HalfCovered,
-      what + ": the left half is shaded plainly");
+    Check(census.NoSearch > HalfCovered, what + ": the left half is shaded plainly");
   }
   CheckSane(census, what);
 }
@@ -447,7 +449,7 @@ void HeightMapNotFinite()
   auto mapper = NewMapper();
   mapper->SetHeightMapData(heights);
   const Census census = Render(Grid(), mapper);
-  CheckOneWarning(census, "finite", "NaN and infinite heights");
+  CheckOneWarning(census, "non-finite height(s)", "NaN and infinite heights");
   Check(census.Relief > 2 * HalfCovered, "NaN and infinite heights: relief from the rest");
   Check(census.MaxSamples <= 15, "NaN and infinite heights: every search ends within its steps");
   CheckSane(census, "NaN and infinite heights");
@@ -523,8 +525,22 @@ int TestReliefBadInput(int argc, char* argv[])
   // the test driver passes -D, -T and -V with their values; the two words are first
   if (argc < 3)
   {
-    std::cerr << "ERROR: usage: TestReliefBadInput <Tangent|Quadric|Derivative> <case>\n";
+    std::cerr << "ERROR: usage: TestReliefBadInput <Tangent|Quadric|Derivative> <case>, or "
+                 "TestReliefBadInput Cases <count>\n";
     return EXIT_FAILURE;
+  }
+  // CMake registers the cases it reads from the table above: as many as there are
+  if (std::strcmp(argv[1], "Cases") == 0)
+  {
+    const int registered = std::atoi(argv[2]);
+    const int count = static_cast<int>(sizeof(Cases) / sizeof(Cases[0]));
+    if (registered != count)
+    {
+      std::cerr << "ERROR: CMake registered " << registered << " bad-input cases of the "
+                << count << " in TestReliefBadInput.cxx: keep each on one line of the table\n";
+      return EXIT_FAILURE;
+    }
+    return EXIT_SUCCESS;
   }
   MapperName = argv[1];
   if (MapperName != "Tangent" && MapperName != "Quadric" && MapperName != "Derivative")

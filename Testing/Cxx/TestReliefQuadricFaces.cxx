@@ -103,6 +103,7 @@ vtkSmartPointer<vtkActor> PlainActor(vtkPolyData* mesh)
 struct Errors
 {
   double Default, CulledByHand, Undecided, TwoSided;
+  bool LeftOut; // the default's mapper left out the back faces
 };
 
 Errors Measure(Scene& scene, const std::function<vtkSmartPointer<vtkPolyData>(int)>& make,
@@ -114,15 +115,22 @@ Errors Measure(Scene& scene, const std::function<vtkSmartPointer<vtkPolyData>(in
   scene.Renderer->ResetCameraClippingRange(truthMesh->GetBounds());
   const ReliefMetrics::Capture truth = Show(scene, PlainActor(truthMesh));
   const ReliefMetrics::Capture polygons = Show(scene, PlainActor(coarse));
+  bool leftOut = false;
   auto error = [&](Faces faces) {
-    return ReliefMetrics::SilhouetteError(
-      Show(scene, ReliefActor(scene, coarse, faces)), polygons, truth);
+    auto actor = ReliefActor(scene, coarse, faces);
+    const ReliefMetrics::Capture capture = Show(scene, actor);
+    if (faces == Faces::Default)
+    {
+      leftOut = static_cast<vtkOpenGLReliefMapper*>(actor->GetMapper())->GetBackFacesLeftOut();
+    }
+    return ReliefMetrics::SilhouetteError(capture, polygons, truth);
   };
   const Errors errors = { error(Faces::Default), error(Faces::CulledByHand),
-    error(Faces::Undecided), error(Faces::TwoSided) };
+    error(Faces::Undecided), error(Faces::TwoSided), leftOut };
   std::cout << name << ": silhouette error by default " << errors.Default
             << ", back faces culled by hand " << errors.CulledByHand << ", undecided "
-            << errors.Undecided << ", two-sided " << errors.TwoSided << "\n";
+            << errors.Undecided << ", two-sided " << errors.TwoSided
+            << (errors.LeftOut ? "; back faces left out" : "; back faces drawn") << "\n";
   return errors;
 }
 
@@ -152,14 +160,15 @@ void CarvedOutlines(Scene& scene)
     std::function<vtkSmartPointer<vtkPolyData>(int)> Make;
     int Facets;
     std::function<void(vtkRenderer*)> Aim;
+    bool Closed; // the mapper leaves out the back faces
   };
   const Case cases[] = {
-    { "sphere 24x12", ReliefScene::Sphere, 24, From(35.0, 30.0, sphereFrame) },
-    { "torus 32x16", ReliefScene::Torus, 32, From(70.0, -20.0, torusFrame) },
+    { "sphere 24x12", ReliefScene::Sphere, 24, From(35.0, 30.0, sphereFrame), true },
+    { "torus 32x16", ReliefScene::Torus, 32, From(70.0, -20.0, torusFrame), true },
     // azimuth 0: the seam of the cylinder lies on its right outline
     { "cylinder without caps, 48 around",
       [](int facets) { return ReliefScene::Cylinder(facets); }, 48,
-      From(0.0, 10.0, cylinderFrame) },
+      From(0.0, 10.0, cylinderFrame), false },
   };
   for (const Case& c : cases)
   {
@@ -170,6 +179,8 @@ void CarvedOutlines(Scene& scene)
       c.Name + ": the default carves as well as back faces culled by hand");
     Check(errors.Undecided <= errors.CulledByHand + 0.02,
       c.Name + ": back fragments that decide for themselves carve as well");
+    Check(errors.LeftOut == c.Closed,
+      c.Name + (c.Closed ? ": closed, its back faces left out" : ": open, its back faces drawn"));
   }
 }
 
@@ -190,22 +201,32 @@ void InsideOfAnOpenPiece(Scene& scene)
 
 void InsideAClosedSphere(Scene& scene)
 {
+  // from the centre, and from near the wall looking along it, where the back faces are
+  // seen at grazing angles: every pixel sees the inside
   auto sphere = ReliefScene::Sphere(24);
-  vtkCamera* camera = scene.Renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 0.0, 0.0);
-  camera->SetFocalPoint(0.0, 1.0, 0.0);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  camera->SetViewAngle(60.0);
-  scene.Renderer->ResetCameraClippingRange(sphere->GetBounds());
-  const ReliefMetrics::Capture inside = Show(scene, ReliefActor(scene, sphere, Faces::Default));
-  long covered = 0;
-  for (size_t pixel = 0; pixel < inside.EyeDepth.size(); ++pixel)
+  const double views[][3] = { { 0.0, 0.0, 0.0 }, { 0.0, -0.47, 0.0 } };
+  for (const auto& eye : views)
   {
-    covered += inside.Covers(pixel) ? 1 : 0;
+    vtkCamera* camera = scene.Renderer->GetActiveCamera();
+    camera->SetPosition(eye[0], eye[1], eye[2]);
+    camera->SetFocalPoint(eye[0] + 1.0, eye[1], eye[2]);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(90.0);
+    scene.Renderer->ResetCameraClippingRange(sphere->GetBounds());
+    auto actor = ReliefActor(scene, sphere, Faces::Default);
+    const ReliefMetrics::Capture inside = Show(scene, actor);
+    long covered = 0;
+    for (size_t pixel = 0; pixel < inside.EyeDepth.size(); ++pixel)
+    {
+      covered += inside.Covers(pixel) ? 1 : 0;
+    }
+    const double coverage = static_cast<double>(covered) / inside.EyeDepth.size();
+    std::cout << "inside a closed sphere, from (" << eye[0] << ", " << eye[1] << ", " << eye[2]
+              << "): " << coverage << " of the view covered\n";
+    Check(coverage > 0.99, "a camera inside a closed sphere sees its inside");
+    Check(!static_cast<vtkOpenGLReliefMapper*>(actor->GetMapper())->GetBackFacesLeftOut(),
+      "inside a closed sphere its back faces are drawn");
   }
-  const double coverage = static_cast<double>(covered) / inside.EyeDepth.size();
-  std::cout << "inside a closed sphere: " << coverage << " of the view covered\n";
-  Check(coverage > 0.99, "a camera inside a closed sphere sees its inside");
 }
 
 void TranslucentShapes(Scene& scene)

@@ -7,6 +7,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -291,6 +292,24 @@ TEST(LocalQuadricFilter, TextureSeamsShareOneNeighbourhood)
       EXPECT_NEAR(quadrics->GetComponent(p, 0), -1.0 / (2.0 * r), 0.01 / r) << i << ", " << j;
       EXPECT_NEAR(quadrics->GetComponent(p, 1), 0.0, 1e-3) << i << ", " << j;
     }
+  }
+}
+
+TEST(LocalQuadricFilter, CreasesSplitForTheirNormalsKeepTheirSides)
+{
+  // a cube's corners are copies, one a face, each with its face's normal: the copies of a
+  // crease stay apart, and every flat face fits flat (fitted over all three faces at a
+  // corner, in one face's frame, a and b would bend strongly)
+  vtkNew<vtkCubeSource> cube;
+  cube->Update();
+  vtkNew<vtkLocalQuadricFilter> filter;
+  vtkPolyData* output = Fit(filter, cube->GetOutput());
+  vtkDataArray* quadrics = Quadrics(output);
+  ASSERT_NE(quadrics, nullptr);
+  for (vtkIdType p = 0; p < quadrics->GetNumberOfTuples(); ++p)
+  {
+    EXPECT_NEAR(quadrics->GetComponent(p, 0), 0.0, 1e-9) << p;
+    EXPECT_NEAR(quadrics->GetComponent(p, 1), 0.0, 1e-9) << p;
   }
 }
 

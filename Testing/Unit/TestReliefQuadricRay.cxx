@@ -148,8 +148,8 @@ TEST_F(ReliefQuadricRay, BackFacesBehindACarvedOutlineAreTold)
         {
           continue; // grazes depth 1: either answer holds
         }
-        EXPECT_EQ(reliefQuadricBehindOutline(reliefQuadricDepthTerms(view, quadric, DepthScale)),
-          expected)
+        const vec2 terms = reliefQuadricDepthTerms(view, quadric, DepthScale);
+        EXPECT_EQ(reliefQuadricBehindOutline(terms, 1e30f), expected)
           << "quadric (" << quadric.x << ", " << quadric.y << "), tilt " << tilt << ", azimuth "
           << azimuth;
         behind += expected ? 1 : 0;
@@ -158,8 +158,15 @@ TEST_F(ReliefQuadricRay, BackFacesBehindACarvedOutlineAreTold)
   }
   EXPECT_GT(behind, 10); // the cases include outlines
   const vec2 sphere(-1.0f, -1.0f);
-  EXPECT_FALSE(reliefQuadricBehindOutline(reliefQuadricDepthTerms(View(1.1f, 0.0f), sphere, DepthScale)));
-  EXPECT_TRUE(reliefQuadricBehindOutline(reliefQuadricDepthTerms(View(1.2f, 0.0f), sphere, DepthScale)));
+  const vec2 steep = reliefQuadricDepthTerms(View(1.1f, 0.0f), sphere, DepthScale);
+  const vec2 grazing = reliefQuadricDepthTerms(View(1.2f, 0.0f), sphere, DepthScale);
+  EXPECT_FALSE(reliefQuadricBehindOutline(steep, 1e30f));
+  EXPECT_TRUE(reliefQuadricBehindOutline(grazing, 1e30f));
+  // the grazing ray comes back out of the quadric cos/sin^2 = 0.39 away: a viewer nearer
+  // than that is inside the shape, and sees the back face
+  const float leaves = std::cos(1.2f) / (std::sin(1.2f) * std::sin(1.2f));
+  EXPECT_TRUE(reliefQuadricBehindOutline(grazing, 1.01f * leaves));
+  EXPECT_FALSE(reliefQuadricBehindOutline(grazing, 0.99f * leaves));
 }
 
 TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)

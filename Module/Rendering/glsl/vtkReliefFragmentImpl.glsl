@@ -62,8 +62,10 @@
     vec3 reliefViewTF = vec3(dot(reliefViewVC, reliefFrameT), dot(reliefViewVC, reliefFrameB),
       dot(reliefViewVC, reliefFrameN));
     // a back face draws relief only where the ray reaches it from inside the shape
-    if (!gl_FrontFacing && reliefTwoSided == 0 && reliefQuadricBehindOutline(
-      reliefQuadricDepthTerms(reliefViewTF, reliefQuadricVSOutput, reliefDepthScale)))
+    if (!gl_FrontFacing && reliefTwoSided == 0 &&
+      reliefQuadricBehindOutline(
+        reliefQuadricDepthTerms(reliefViewTF, reliefQuadricVSOutput, reliefDepthScale),
+        cameraParallel == 1 ? 1e30 : length(reliefPositionVSOutput)))
     {
       discard;
     }
