@@ -31,6 +31,12 @@ vtkLocalQuadricFilter* vtkOpenGLQuadricReliefMapper::GetLocalQuadricFilter()
   return this->QuadricFilter;
 }
 
+vtkPolyData* vtkOpenGLQuadricReliefMapper::GetReliefSurface()
+{
+  return this->ComputesQuadrics ? this->QuadricFilter->GetOutput()
+                                : this->Superclass::GetReliefSurface();
+}
+
 bool vtkOpenGLQuadricReliefMapper::HasUsableQuadrics(vtkPolyData* mesh)
 {
   vtkAbstractArray* array =
@@ -59,7 +65,8 @@ bool vtkOpenGLQuadricReliefMapper::HasUsableQuadrics(vtkPolyData* mesh)
 
 bool vtkOpenGLQuadricReliefMapper::UpdateReliefSurface()
 {
-  if (this->HasUsableQuadrics(this->CurrentInput))
+  this->ComputesQuadrics = !this->HasUsableQuadrics(this->CurrentInput);
+  if (!this->ComputesQuadrics)
   {
     return this->Superclass::UpdateReliefSurface();
   }

@@ -57,6 +57,9 @@ public:
   /// The filter that computes the quadrics when the input has none, to configure it.
   vtkLocalQuadricFilter* GetLocalQuadricFilter();
 
+  /// The mesh as rendered: with the input's quadrics or those computed.
+  vtkPolyData* GetReliefSurface() override;
+
   enum DistanceModes
   {
     APPROXIMATE = 0, ///< Eq. 7: the depth below the quadric along the normal (default)
@@ -95,6 +98,7 @@ protected:
 
   vtkLocalQuadricFilter* QuadricFilter;
   int DistanceMode = APPROXIMATE;
+  bool ComputesQuadrics = true; // the input had no usable quadrics at the last render
   vtkMTimeType WarnedQuadricsTime = 0;
 
 private:

@@ -1077,6 +1077,7 @@ void vtkOpenGLReliefMapper::SetCameraShaderParameters(
   static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
     ->GetKeyMatrices(ren, worldToView, normalWorldToView, viewToDisplay, worldToDisplay);
   program->SetUniformMatrix("reliefVCDCMatrix", viewToDisplay);
+  program->SetUniformi("reliefMirrored", actor->GetMatrix()->Determinant() < 0.0 ? 1 : 0);
 
   // Directions in model units, free of the position VBO's shift and scale.
   vtkNew<vtkMatrix4x4> modelToView;

@@ -7,8 +7,8 @@
 //   plane could open it), where each back fragment decides for itself;
 // - the inside of an open piece of cylinder is drawn as two-sided relief draws it, where
 //   culling by hand loses it;
-// - a camera inside a closed sphere sees its inside, and through a translucent one its far
-//   side shows;
+// - a camera inside a closed sphere sees its inside, through a translucent one its far
+//   side shows, and a mirrored one is drawn whole;
 // - TwoSidedRelief on fills the outlines again, which shows that the views test them.
 #include "ReliefMetrics.h"
 #include "ReliefScene.h"
@@ -254,6 +254,26 @@ void TranslucentShapes(Scene& scene)
   std::cout << "translucent sphere: mean difference " << difference
             << " from back faces culled by hand\n";
   Check(difference > 0.001, "a translucent closed sphere shows its far side");
+
+  // a mirroring actor turns the windings round: its back faces are not left out, and the
+  // sphere (symmetric) covers what it covers unmirrored
+  auto covered = [&](bool mirror) {
+    auto actor = ReliefActor(scene, sphere, Faces::Default);
+    actor->SetScale(mirror ? -1.0 : 1.0, 1.0, 1.0);
+    const ReliefMetrics::Capture capture = Show(scene, actor);
+    long count = 0;
+    for (size_t pixel = 0; pixel < capture.EyeDepth.size(); ++pixel)
+    {
+      count += capture.Covers(pixel) ? 1 : 0;
+    }
+    Check(static_cast<vtkOpenGLReliefMapper*>(actor->GetMapper())->GetBackFacesLeftOut() == !mirror,
+      mirror ? "a mirrored closed sphere keeps its back faces" : "the sphere's are left out");
+    return count;
+  };
+  const long plain = covered(false);
+  const long mirrored = covered(true);
+  std::cout << "sphere: " << plain << " pixels covered, mirrored " << mirrored << "\n";
+  Check(std::abs(mirrored - plain) < plain / 50, "a mirrored closed sphere is drawn whole");
 }
 }
 

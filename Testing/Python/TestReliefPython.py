@@ -352,6 +352,24 @@ class TestDerivativeRender(unittest.TestCase):
         self.assertIsNone(surface.GetNormals())
         self.assertEqual(errors.messages, [])
 
+    def test_quadric_mapper_decides_which_faces_carry_relief(self):
+        reader = vtkOBJReader()  # a closed torus, its texture seams duplicated
+        reader.SetFileName(os.path.join(ARGUMENTS.data, "torus.obj"))
+        mapper = vtkOpenGLQuadricReliefMapper()
+        mapper.SetInputConnection(reader.GetOutputPort())
+        pixels = self.render(mapper, sample_count=True)
+        one_sided = pixels()
+        self.assertTrue(mapper.GetBackFacesLeftOut(), "closed, seen from outside")
+        surface = mapper.GetReliefSurface().GetPointData()
+        self.assertIsNotNone(surface.GetArray(vtkLocalQuadricFilter.QuadricArrayName()))
+        mapper.TwoSidedReliefOn()
+        two_sided = pixels()
+        self.assertFalse(mapper.GetBackFacesLeftOut())
+        # the back faces fill the outlines the relief carves
+        def covered(image):
+            return (image != [0, 0, 255]).any(axis=1)
+        self.assertGreater(covered(two_sided).sum(), covered(one_sided).sum() + 50)
+
     def test_compute_normals_smooths_a_mesh_without_them(self):
         reader = vtkOBJReader()
         reader.SetFileName(os.path.join(ARGUMENTS.data, "torus.obj"))

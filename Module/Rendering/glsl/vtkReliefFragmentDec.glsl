@@ -15,6 +15,7 @@ uniform int reliefSelfShadowing;
 uniform int reliefDepthCorrection;
 uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
 uniform int reliefTwoSided;        // 1: back faces carry relief wherever they are drawn
+uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative determinant)
 uniform mat4 reliefVCDCMatrix;
 in vec3 reliefPositionVSOutput;
 in vec2 reliefTCoordVSOutput;

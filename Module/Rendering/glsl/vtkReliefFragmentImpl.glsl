@@ -9,6 +9,8 @@
   reliefLod = reliefLevel(reliefTextureSize);
   vec3 reliefViewVC =
     cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
+  // the side the mesh's winding faces: a mirroring actor matrix turns the screen's round
+  bool reliefFrontFacing = gl_FrontFacing == (reliefMirrored == 0);
 #ifdef RELIEF_DERIVATIVE_FRAME
   // the derivative frame (seed 003): the triangle's own mapping, from how position and
   // texture coordinates change from pixel to pixel; its normal faces the viewer
@@ -37,7 +39,7 @@
   vec3 reliefFrameB = cross(reliefFrameN, reliefFrameT);
   // seen from behind, the relief is carved into the back: the normal turns, the
   // texture axes stay
-  if (gl_FrontFacing == false) { reliefFrameN = -reliefFrameN; }
+  if (!reliefFrontFacing) { reliefFrameN = -reliefFrameN; }
   vec2 reliefScale = reliefTextureScaleVSOutput;
   if (abs(reliefScale.x) < 1e-20) { reliefScale.x = 1e-20; }
   if (abs(reliefScale.y) < 1e-20) { reliefScale.y = 1e-20; }
@@ -62,14 +64,14 @@
     vec3 reliefViewTF = vec3(dot(reliefViewVC, reliefFrameT), dot(reliefViewVC, reliefFrameB),
       dot(reliefViewVC, reliefFrameN));
     // a back face draws relief only where the ray reaches it from inside the shape
-    if (!gl_FrontFacing && reliefTwoSided == 0 &&
+    if (!reliefFrontFacing && reliefTwoSided == 0 &&
       reliefQuadricBehindOutline(
         reliefQuadricDepthTerms(reliefViewTF, reliefQuadricVSOutput, reliefDepthScale),
         cameraParallel == 1 ? 1e30 : length(reliefPositionVSOutput)))
     {
       discard;
     }
-    vec2 reliefQuadric = gl_FrontFacing ? reliefQuadricVSOutput : -reliefQuadricVSOutput;
+    vec2 reliefQuadric = reliefFrontFacing ? reliefQuadricVSOutput : -reliefQuadricVSOutput;
     vec2 reliefTerms = reliefQuadricDepthTerms(reliefViewTF, reliefQuadric, reliefDepthScale);
     float reliefRange = reliefQuadricRange(reliefTerms);
     ReliefRay reliefViewRayTS = reliefQuadricViewRay(
