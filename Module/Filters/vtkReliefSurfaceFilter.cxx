@@ -142,7 +142,13 @@ vtkReliefSurfaceFilter::~vtkReliefSurfaceFilter() = default;
 
 namespace
 {
-// Whether a cell of `cells` refers to a point id outside [0, points).
+// Whether a cell names a point id outside [0, points).
+bool NamesMissingPoint(vtkIdType size, const vtkIdType* ids, vtkIdType points)
+{
+  return std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; });
+}
+
+// Whether a cell of `cells` names a point id outside [0, points).
 bool RefersOutside(vtkCellArray* cells, vtkIdType points)
 {
   auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
@@ -151,7 +157,7 @@ bool RefersOutside(vtkCellArray* cells, vtkIdType points)
     vtkIdType size;
     const vtkIdType* ids;
     iterator->GetCurrentCell(size, ids);
-    if (std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; }))
+    if (NamesMissingPoint(size, ids, points))
     {
       return true;
     }
@@ -224,9 +230,7 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutCellsWithMissingPoi
   vtkIdType left = 0;
   auto result = WithoutCells(
     mesh,
-    [points](vtkIdType size, const vtkIdType* ids) {
-      return std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; });
-    },
+    [points](vtkIdType size, const vtkIdType* ids) { return NamesMissingPoint(size, ids, points); },
     left);
   vtkErrorMacro("The mesh is broken: " << left << " of its cells refer to points it does not "
                                        << "have (it has " << points

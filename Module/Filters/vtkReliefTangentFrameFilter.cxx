@@ -173,8 +173,8 @@ vtkSmartPointer<vtkPolyData> WithDirectedNormals(vtkPolyData* mesh)
   const double up[3] = { 0.0, 0.0, 1.0 }; // a point on degenerate triangles only
   for (vtkIdType point : undirected)
   {
-    repaired->SetTuple(
-      point, vtkReliefSurfaceFilter::HasDirection(computed, point) ? computed->GetTuple(point) : up);
+    const bool directed = vtkReliefSurfaceFilter::HasDirection(computed, point);
+    repaired->SetTuple(point, directed ? computed->GetTuple(point) : up);
   }
   auto result = vtkSmartPointer<vtkPolyData>::New();
   result->ShallowCopy(mesh);
