@@ -165,11 +165,12 @@ bool RefersOutside(vtkCellArray* cells, vtkIdType points)
   return false;
 }
 
-// `mesh` without the cells that `leave` picks by their point ids, its cell data kept in
-// step (vtkPolyData numbers its cells verts, lines, polys, strips); `left` counts them.
-vtkSmartPointer<vtkPolyData> WithoutCells(vtkPolyData* mesh,
+}
+
+vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutCells(vtkPolyData* mesh,
   const std::function<bool(vtkIdType, const vtkIdType*)>& leave, vtkIdType& left)
 {
+  // vtkPolyData numbers its cells verts, lines, polys, strips: the cell data follows
   vtkCellData* cellData = mesh->GetCellData();
   vtkNew<vtkCellData> keptData;
   keptData->CopyAllocate(cellData, mesh->GetNumberOfCells());
@@ -210,7 +211,6 @@ vtkSmartPointer<vtkPolyData> WithoutCells(vtkPolyData* mesh,
   result->GetCellData()->ShallowCopy(keptData);
   return result;
 }
-}
 
 bool vtkReliefSurfaceFilter::RefersToMissingPoints(vtkPolyData* mesh)
 {
@@ -228,7 +228,7 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutCellsWithMissingPoi
   }
   const vtkIdType points = mesh->GetNumberOfPoints();
   vtkIdType left = 0;
-  auto result = WithoutCells(
+  auto result = LeaveOutCells(
     mesh,
     [points](vtkIdType size, const vtkIdType* ids) { return NamesMissingPoint(size, ids, points); },
     left);
@@ -335,6 +335,27 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::WithUsableNormals(vtkPolyDa
   return mesh;
 }
 
+bool vtkReliefSurfaceFilter::GetFiniteBounds(vtkPolyData* mesh, double bounds[6])
+{
+  vtkBoundingBox box;
+  for (vtkIdType point = 0; point < mesh->GetNumberOfPoints(); ++point)
+  {
+    double position[3];
+    mesh->GetPoint(point, position);
+    if (std::isfinite(position[0]) && std::isfinite(position[1]) && std::isfinite(position[2]))
+    {
+      box.AddPoint(position);
+    }
+  }
+  if (!box.IsValid())
+  {
+    vtkMath::UninitializeBounds(bounds);
+    return false;
+  }
+  box.GetBounds(bounds);
+  return true;
+}
+
 vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutNonFinitePoints(vtkPolyData* mesh)
 {
   auto isFinite = [](const double* p) {
@@ -365,25 +386,18 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::LeaveOutNonFinitePoints(vtk
   // The points stay, with their data, so that bounds and buffers stay finite: moved next
   // to a finite point, 1e-6 of the finite points' size away, not onto it (the filters
   // take coincident points as one, see vtkReliefCoincidentPoints). Their triangles go.
-  vtkBoundingBox finiteBox;
-  for (vtkIdType point = 0; point < mesh->GetNumberOfPoints(); ++point)
-  {
-    double position[3];
-    mesh->GetPoint(point, position);
-    if (isFinite(position))
-    {
-      finiteBox.AddPoint(position);
-    }
-  }
+  double finiteBounds[6];
+  const double size = GetFiniteBounds(mesh, finiteBounds)
+    ? vtkBoundingBox(finiteBounds).GetDiagonalLength()
+    : 0.0;
   double stand[3] = { 0.0, 0.0, 0.0 };
   if (finite >= 0)
   {
     mesh->GetPoint(finite, stand);
   }
-  const double size = finiteBox.IsValid() ? finiteBox.GetDiagonalLength() : 0.0;
   stand[0] += size > 0.0 ? 1e-6 * size : 1e-6;
   vtkIdType left = 0;
-  auto result = WithoutCells(
+  auto result = LeaveOutCells(
     mesh,
     [mesh, &isFinite](vtkIdType size, const vtkIdType* ids) {
       return std::any_of(

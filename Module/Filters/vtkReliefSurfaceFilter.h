@@ -25,6 +25,8 @@
 #include "vtkReliefFiltersModule.h"
 #include "vtkSmartPointer.h" // for ExtractTriangles
 
+#include <functional> // for LeaveOutCells
+
 class vtkDataArray;
 
 class VTKRELIEFFILTERS_EXPORT vtkReliefSurfaceFilter : public vtkPolyDataAlgorithm
@@ -55,6 +57,9 @@ public:
   /// Whether a cell of `mesh` refers to a point id the mesh does not have (a broken file).
   static bool RefersToMissingPoints(vtkPolyData* mesh);
 
+  /// The bounds of the finite points of `mesh`; false (bounds uninitialized) when none is.
+  static bool GetFiniteBounds(vtkPolyData* mesh, double bounds[6]);
+
 protected:
   vtkReliefSurfaceFilter();
   ~vtkReliefSurfaceFilter() override;
@@ -80,6 +85,11 @@ protected:
    * finite), which the mappers replace by the surface's own.
    */
   vtkSmartPointer<vtkPolyData> WithUsableNormals(vtkPolyData* mesh);
+
+  /// `mesh` without the cells that `leave` picks by their point ids (count, ids), its cell
+  /// data kept in step; `left` counts the cells left out.
+  static vtkSmartPointer<vtkPolyData> LeaveOutCells(vtkPolyData* mesh,
+    const std::function<bool(vtkIdType, const vtkIdType*)>& leave, vtkIdType& left);
 
   /// The mesh without the cells that refer to points it does not have (with one error);
   /// the mesh itself when there are none.

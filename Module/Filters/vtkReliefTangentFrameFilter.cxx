@@ -182,38 +182,10 @@ vtkSmartPointer<vtkPolyData> WithDirectedNormals(vtkPolyData* mesh)
   return result;
 }
 
-// The mesh with point tangents from vtkPolyDataTangents, taken over the triangles whose
-// texture coordinates are all finite: a broken triangle's tangents would spoil those of
-// every point it shares with good ones.
-vtkSmartPointer<vtkPolyData> WithTangents(vtkPolyData* mesh)
+// The mesh with the point tangents vtkPolyDataTangents finds over `source`: the same
+// points, the triangles whose tangents may be trusted.
+vtkSmartPointer<vtkPolyData> WithTangents(vtkPolyData* mesh, vtkPolyData* source)
 {
-  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
-  vtkNew<vtkCellArray> finite;
-  bool allFinite = true;
-  auto triangles = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (triangles->GoToFirstCell(); !triangles->IsDoneWithTraversal(); triangles->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    triangles->GetCurrentCell(size, ids);
-    bool usable = true;
-    for (vtkIdType corner = 0; corner < size; ++corner)
-    {
-      usable =
-        usable && vtkReliefSurfaceFilter::HasFiniteTextureCoordinates(tcoords, ids[corner]);
-    }
-    allFinite = allFinite && usable;
-    if (usable)
-    {
-      finite->InsertNextCell(size, ids);
-    }
-  }
-  vtkNew<vtkPolyData> source;
-  source->ShallowCopy(mesh);
-  if (!allFinite)
-  {
-    source->SetPolys(finite);
-  }
   vtkNew<vtkPolyDataTangents> tangents;
   tangents->SetInputData(source);
   tangents->ComputePointTangentsOn();
@@ -284,7 +256,18 @@ int vtkReliefTangentFrameFilter::RequestData(
 
   if (!mesh->GetPointData()->GetTangents())
   {
-    mesh = WithTangents(mesh);
+    // over the triangles whose texture coordinates are all finite: a broken triangle's
+    // tangents would spoil those of every point it shares with good ones
+    vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+    vtkIdType broken = 0;
+    auto finite = LeaveOutCells(
+      mesh,
+      [tcoords](vtkIdType size, const vtkIdType* ids) {
+        return std::any_of(ids, ids + size,
+          [tcoords](vtkIdType id) { return !HasFiniteTextureCoordinates(tcoords, id); });
+      },
+      broken);
+    mesh = WithTangents(mesh, finite);
   }
   this->UpdateProgress(0.75);
 

@@ -2,7 +2,6 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
-#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkConeStepMapFilter.h"
@@ -181,21 +180,7 @@ void vtkOpenGLReliefMapper::ComputeBounds()
       return;
     }
   }
-  vtkBoundingBox box;
-  for (vtkIdType point = 0; input && point < input->GetNumberOfPoints(); ++point)
-  {
-    double position[3];
-    input->GetPoint(point, position);
-    if (std::isfinite(position[0]) && std::isfinite(position[1]) && std::isfinite(position[2]))
-    {
-      box.AddPoint(position);
-    }
-  }
-  if (box.IsValid())
-  {
-    box.GetBounds(this->Bounds);
-  }
-  else
+  if (!input || !vtkReliefSurfaceFilter::GetFiniteBounds(input, this->Bounds))
   {
     vtkMath::UninitializeBounds(this->Bounds);
   }
