@@ -22,6 +22,8 @@
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
 
+#include "ReliefCpuMirror.h"
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -34,11 +36,8 @@
 
 namespace
 {
-namespace Shader
-{
-using namespace glm;
-#include "vtkReliefDerivativeFrame.glsl"
-}
+// the frame's source as the GPU compiles it; its axes do not depend on the normals' define
+namespace Shader = ReliefCpuMirror::DerivativeNormals;
 
 constexpr double Pi = 3.14159265358979323846;
 

@@ -8,6 +8,8 @@
 #include "vtkReliefForwardMessages.h"
 #include "vtkReliefSurfaceFilter.h"
 
+#include "vtkReliefDerivativeFrame.h"
+
 vtkStandardNewMacro(vtkOpenGLDerivativeReliefMapper);
 
 vtkOpenGLDerivativeReliefMapper::vtkOpenGLDerivativeReliefMapper()
@@ -67,22 +69,21 @@ vtkPolyData* vtkOpenGLDerivativeReliefMapper::WithComputedNormals(vtkPolyData* s
   return this->NormalsSurface;
 }
 
-void vtkOpenGLDerivativeReliefMapper::MapReliefAttributes(bool relief)
+void vtkOpenGLDerivativeReliefMapper::MapFrameAttributes(bool relief)
 {
   vtkPointData* pointData = this->CurrentInput->GetPointData();
-  this->MapReliefAttribute(TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr);
   this->MapReliefAttribute(NormalAttribute,
     relief && this->HasVertexNormals ? pointData->GetNormals()->GetName() : nullptr);
-  // the tangent frame's inputs stay unbound: this frame never reads them
-  this->MapReliefAttribute(TangentAttribute, nullptr);
-  this->MapReliefAttribute(TextureScaleAttribute, nullptr);
+}
+
+std::string vtkOpenGLDerivativeReliefMapper::GetFrameSource()
+{
+  return vtkReliefDerivativeFrame;
 }
 
 std::string vtkOpenGLDerivativeReliefMapper::GetFrameDefines()
 {
-  return this->HasVertexNormals
-    ? "#define RELIEF_DERIVATIVE_FRAME\n#define RELIEF_VERTEX_NORMALS\n"
-    : "#define RELIEF_DERIVATIVE_FRAME\n";
+  return this->HasVertexNormals ? "#define RELIEF_VERTEX_NORMALS\n" : "";
 }
 
 void vtkOpenGLDerivativeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)

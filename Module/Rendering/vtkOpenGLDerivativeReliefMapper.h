@@ -72,7 +72,8 @@ protected:
   ~vtkOpenGLDerivativeReliefMapper() override;
 
   bool UpdateReliefSurface() override;
-  void MapReliefAttributes(bool relief) override;
+  void MapFrameAttributes(bool relief) override;
+  std::string GetFrameSource() override;
   std::string GetFrameDefines() override;
 
   /// `surface` with smooth point normals added (NormalsSurface), its cells untouched.

@@ -8,6 +8,9 @@
 #include "vtkPolyData.h"
 #include "vtkReliefForwardMessages.h"
 
+#include "vtkReliefQuadricFrame.h"
+#include "vtkReliefTangentBasis.h"
+
 vtkStandardNewMacro(vtkOpenGLQuadricReliefMapper);
 
 namespace
@@ -81,9 +84,9 @@ bool vtkOpenGLQuadricReliefMapper::UpdateReliefSurface()
   return framed->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName()) != nullptr;
 }
 
-void vtkOpenGLQuadricReliefMapper::MapReliefAttributes(bool relief)
+void vtkOpenGLQuadricReliefMapper::MapFrameAttributes(bool relief)
 {
-  this->Superclass::MapReliefAttributes(relief);
+  this->Superclass::MapFrameAttributes(relief);
   this->MapReliefAttribute(
     QuadricAttribute, relief ? vtkLocalQuadricFilter::QuadricArrayName() : nullptr);
 }
@@ -99,10 +102,14 @@ const char* vtkOpenGLQuadricReliefMapper::GetUnsupportedSearchReason()
          "texture space, and below a quadric the ray's depth is quadratic.";
 }
 
+std::string vtkOpenGLQuadricReliefMapper::GetFrameSource()
+{
+  return std::string(vtkReliefTangentBasis) + vtkReliefQuadricFrame;
+}
+
 std::string vtkOpenGLQuadricReliefMapper::GetFrameDefines()
 {
-  return this->Superclass::GetFrameDefines() + "#define RELIEF_QUADRIC\n" +
-    (this->DistanceMode == EXACT ? "#define RELIEF_EXACT_DISTANCE\n" : "");
+  return this->DistanceMode == EXACT ? "#define RELIEF_EXACT_DISTANCE\n" : "";
 }
 
 void vtkOpenGLQuadricReliefMapper::SetDistanceMode(int mode)

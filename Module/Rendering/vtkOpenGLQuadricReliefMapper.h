@@ -35,7 +35,7 @@
  * closed mesh seen from outside are left out; on other meshes a back fragment whose ray,
  * followed back toward the viewer below the quadric, comes back out of it before depth 1
  * came in through the curved surface close by, where the front faces answer for it, and
- * is discarded (vtkReliefQuadric.glsl, reliefQuadricBehindOutline). The polygons must
+ * is discarded (vtkReliefQuadricFrame.glsl, reliefQuadricBehindOutline). The polygons must
  * enclose the relief: where the facets sag below the true surface by a good part of
  * DepthScale, the relief's outermost points cannot be drawn.
  */
@@ -87,9 +87,10 @@ protected:
   ~vtkOpenGLQuadricReliefMapper() override;
 
   bool UpdateReliefSurface() override;
-  void MapReliefAttributes(bool relief) override;
+  void MapFrameAttributes(bool relief) override;
   bool SupportsSearchMethod(int method) override;
   const char* GetUnsupportedSearchReason() override;
+  std::string GetFrameSource() override;
   std::string GetFrameDefines() override;
 
   /// True when the input carries usable quadrics; warns once per mesh when it carries

@@ -38,8 +38,6 @@
 
 #include "vtkReliefCommon.h"
 #include "vtkReliefConeSearch.h"
-#include "vtkReliefDerivativeFrame.h"
-#include "vtkReliefQuadric.h"
 #include "vtkReliefFragmentDec.h"
 #include "vtkReliefFragmentImpl.h"
 #include "vtkReliefGeometryDec.h"
@@ -47,7 +45,8 @@
 #include "vtkReliefGridSearch.h"
 #include "vtkReliefSafetySearch.h"
 #include "vtkReliefSearch.h"
-#include "vtkReliefSearchMethod.h"
+#include "vtkReliefTangentBasis.h"
+#include "vtkReliefTangentFrame.h"
 #include "vtkReliefVertexDec.h"
 #include "vtkReliefVertexImpl.h"
 
@@ -144,7 +143,6 @@ vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
 {
   this->SetNumberOfInputPorts(3);
   // The internal filters' errors and warnings are the mapper's.
-  vtkReliefForwardMessages(this->TangentFrame, this);
   vtkReliefForwardMessages(this->ReliefTextureFilter, this);
 }
 
@@ -246,19 +244,19 @@ std::string vtkOpenGLReliefMapper::GetSearchDefines()
   switch (this->ActiveSearchMethod)
   {
     case LINEAR:
-      return "#define RELIEF_SEARCH_LINEAR\n";
+      return "#define RELIEF_SEARCH reliefSearchLinear\n";
     case SECANT:
-      return "#define RELIEF_SEARCH_SECANT\n";
+      return "#define RELIEF_SEARCH reliefSearchSecant\n";
     case EXACT_DDA:
-      return "#define RELIEF_SEARCH_EXACT_DDA\n";
+      return "#define RELIEF_SEARCH reliefSearchExactDDA\n";
     case SAFETY_RADIUS:
-      return "#define RELIEF_SEARCH_SAFETY_RADIUS\n";
+      return "#define RELIEF_SEARCH reliefSearchSafetyRadius\n";
     case CONE_STEP:
-      return "#define RELIEF_SEARCH_CONE_STEP\n";
+      return "#define RELIEF_SEARCH reliefSearchConeStep\n";
     case MAXIMUM_MIPMAP:
-      return "#define RELIEF_SEARCH_MAXIMUM_MIPMAP\n";
+      return "#define RELIEF_SEARCH reliefSearchMaximumMipmap\n";
     default:
-      return "#define RELIEF_SEARCH_LINEAR_BINARY\n";
+      return "#define RELIEF_SEARCH reliefSearchLinearBinary\n";
   }
 }
 
@@ -386,7 +384,18 @@ vtkReliefTextureFilter* vtkOpenGLReliefMapper::GetReliefTextureFilter()
 
 vtkPolyData* vtkOpenGLReliefMapper::GetReliefSurface()
 {
-  return this->TangentFrame->GetOutput();
+  return this->GetTangentFrameFilter()->GetOutput();
+}
+
+vtkReliefTangentFrameFilter* vtkOpenGLReliefMapper::GetTangentFrameFilter()
+{
+  // made on first use: the frames that need no tangents never make it
+  if (!this->TangentFrame)
+  {
+    this->TangentFrame = vtkSmartPointer<vtkReliefTangentFrameFilter>::New();
+    vtkReliefForwardMessages(this->TangentFrame, this);
+  }
+  return this->TangentFrame;
 }
 
 //------------------------------------------------------------------------------
@@ -394,7 +403,7 @@ bool vtkOpenGLReliefMapper::UpdateReliefSurface()
 {
   // a mesh it cannot frame (no texture coordinates, no polygons) is an error of the
   // filter, reported through the mapper once per change of the mesh
-  this->TangentFrame->SetInputData(this->CurrentInput);
+  this->GetTangentFrameFilter()->SetInputData(this->CurrentInput);
   this->TangentFrame->Update();
   // without relief the mesh is drawn plainly, as the filter passes it: broken cells left out
   this->CurrentInput = this->TangentFrame->GetOutput();
@@ -662,10 +671,16 @@ bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* a
 void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
 {
   vtkPointData* pointData = this->CurrentInput->GetPointData();
+  this->MapReliefAttribute(TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr);
+  this->MapFrameAttributes(relief);
+}
+
+void vtkOpenGLReliefMapper::MapFrameAttributes(bool relief)
+{
+  vtkPointData* pointData = this->CurrentInput->GetPointData();
   this->MapReliefAttribute(NormalAttribute, relief ? pointData->GetNormals()->GetName() : nullptr);
   this->MapReliefAttribute(
     TangentAttribute, relief ? pointData->GetTangents()->GetName() : nullptr);
-  this->MapReliefAttribute(TCoordAttribute, relief ? pointData->GetTCoords()->GetName() : nullptr);
   this->MapReliefAttribute(
     TextureScaleAttribute, relief ? vtkReliefTangentFrameFilter::TextureScaleArrayName() : nullptr);
 }
@@ -690,9 +705,20 @@ void vtkOpenGLReliefMapper::MapReliefAttribute(const char* shaderInput, const ch
   }
 }
 
+std::string vtkOpenGLReliefMapper::GetFrameSource()
+{
+  return std::string(vtkReliefTangentBasis) + vtkReliefTangentFrame;
+}
+
 std::string vtkOpenGLReliefMapper::GetFrameDefines()
 {
-  return "#define RELIEF_TANGENT_FRAME\n#define RELIEF_VERTEX_NORMALS\n";
+  return "";
+}
+
+std::string vtkOpenGLReliefMapper::GetFrameShaderCode(const char* stage)
+{
+  return std::string("#define ") + stage + "\n" + this->GetFrameDefines() +
+    this->GetFrameSource() + "\n#undef " + stage + "\n";
 }
 
 bool vtkOpenGLReliefMapper::UpdateRelief(vtkRenderer* ren)
@@ -895,7 +921,8 @@ void vtkOpenGLReliefMapper::InsertReliefVertexShader(vtkShader* vertexShader)
 {
   std::string vertexSource = vertexShader->GetSource();
   vtkShaderProgram::Substitute(vertexSource, "//VTK::PositionVC::Dec",
-    "//VTK::PositionVC::Dec\n" + this->GetFrameDefines() + vtkReliefVertexDec);
+    "//VTK::PositionVC::Dec\n" + std::string(vtkReliefVertexDec) +
+      this->GetFrameShaderCode("RELIEF_VERTEX_STAGE"));
   vtkShaderProgram::Substitute(vertexSource, "//VTK::CustomEnd::Impl",
     std::string(vtkReliefVertexImpl) + "\n  //VTK::CustomEnd::Impl");
   vertexShader->SetSource(vertexSource);
@@ -905,11 +932,12 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShader* fragmentShader, int lightComplexity)
 {
   std::string declarations = vtkReliefFragmentDec;
-  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common",
-    std::string(vtkReliefCommon) + vtkReliefDerivativeFrame);
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
     std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
-      vtkReliefConeSearch + vtkReliefQuadric + vtkReliefSearchMethod);
+      vtkReliefConeSearch);
+  vtkShaderProgram::Substitute(
+    declarations, "//VTK::Relief::Frame", this->GetFrameShaderCode("RELIEF_FRAGMENT_STAGE"));
   // VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit,
   // unless that slot carries the colour coordinates of scalars mapped through a texture.
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
@@ -919,7 +947,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::System::Dec",
     "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable\n");
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
-    "//VTK::Edges::Dec\n" + this->GetFrameDefines() + this->GetSearchDefines() +
+    "//VTK::Edges::Dec\n" + this->GetSearchDefines() +
       (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations);
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
     std::string(vtkReliefFragmentImpl) + "\n  //VTK::UniformFlow::Impl");
@@ -950,7 +978,8 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
   if (!geometrySource.empty())
   {
     vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Dec",
-      "//VTK::Normal::Dec\n" + this->GetFrameDefines() + vtkReliefGeometryDec);
+      "//VTK::Normal::Dec\n" + std::string(vtkReliefGeometryDec) +
+        this->GetFrameShaderCode("RELIEF_GEOMETRY_STAGE"));
     vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Impl",
       std::string("//VTK::Normal::Impl\n") + vtkReliefGeometryImpl);
     geometryShader->SetSource(geometrySource);
@@ -1135,6 +1164,9 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TextureBytes: " << this->GetTextureBytes() << "\n";
   os << indent << "ReliefTextureFilter:\n";
   this->ReliefTextureFilter->PrintSelf(os, indent.GetNextIndent());
-  os << indent << "TangentFrame:\n";
-  this->TangentFrame->PrintSelf(os, indent.GetNextIndent());
+  if (this->TangentFrame)
+  {
+    os << indent << "TangentFrame:\n";
+    this->TangentFrame->PrintSelf(os, indent.GetNextIndent());
+  }
 }

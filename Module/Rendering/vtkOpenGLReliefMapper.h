@@ -271,8 +271,11 @@ protected:
   bool CheckAcceleration(vtkImageData* acceleration);
   bool UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration);
   void SetActiveSearchMethod(int method);
-  /// Binds the frame's arrays to the shader inputs (none when relief is not drawn).
-  virtual void MapReliefAttributes(bool relief);
+  /// Binds the texture coordinates and the frame's arrays to the shader inputs (none
+  /// when relief is not drawn).
+  void MapReliefAttributes(bool relief);
+  /// Binds the frame's own arrays (MapReliefAttribute): the tangent frame's here.
+  virtual void MapFrameAttributes(bool relief);
   /// Whether this render leaves out back faces, which only carved outlines could show.
   bool ShouldCullBackFaces(vtkRenderer* ren, vtkActor* actor);
   ///@{
@@ -288,8 +291,14 @@ protected:
   virtual bool SupportsSearchMethod(int) { return true; }
   /// Why SupportsSearchMethod() refused, for the warning.
   virtual const char* GetUnsupportedSearchReason() { return ""; }
-  /// Defines that select the frame, in every shader stage: the tangent frame here.
+  /// The frame's GLSL (vtkReliefCommon.glsl's frame interface): the tangent frame here.
+  virtual std::string GetFrameSource();
+  /// Defines the frame's source reads, in every shader stage: none here.
   virtual std::string GetFrameDefines();
+  /// The frame's code for one shader stage (RELIEF_VERTEX_STAGE, ...).
+  std::string GetFrameShaderCode(const char* stage);
+  /// The tangent frame filter, made on first use.
+  vtkReliefTangentFrameFilter* GetTangentFrameFilter();
   void InsertReliefVertexShader(vtkShader* vertexShader);
   void InsertReliefFragmentShader(vtkShader* fragmentShader, int lightComplexity);
   void InsertReliefGeometryShader(vtkShader* geometryShader);
@@ -307,7 +316,7 @@ protected:
   int DisplayMode = SHADED;
   bool TwoSidedRelief = false;
 
-  vtkNew<vtkReliefTangentFrameFilter> TangentFrame;
+  vtkSmartPointer<vtkReliefTangentFrameFilter> TangentFrame; // GetTangentFrameFilter()
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
   vtkNew<vtkTextureObject> DepthTexture;  // 16-bit depth: searched, and shaded from
   vtkNew<vtkTextureObject> NormalTexture; // (nx, ny) of an input normal map, if one is used

@@ -1,9 +1,10 @@
 // The GPU agrees with the CPU mirror: for each search method, a fixed oblique view of
 // tiled relief is rendered, its depth buffer read back, and at sampled pixels the hit the
 // shader wrote is compared with the hit of the same search run on the CPU, through
-// ReliefCpuMirror.h: the very GLSL files of the mapper compiled as C++. The CPU rebuilds
-// each pixel's view ray exactly as vtkReliefVertexImpl.glsl and vtkReliefFragmentImpl.glsl
-// do, so what is compared is the whole chain on the GPU (frame, texture upload,
+// ReliefCpuMirror.h: the very GLSL files of the mapper compiled as C++. The CPU builds
+// each pixel's view ray with the tangent frame's own code (vtkReliefTangentBasis.glsl,
+// vtkReliefTangentFrame.glsl), from the vertex stage's basis to the hit's distance, so
+// what is compared is the whole chain on the GPU (interpolation, texture upload,
 // acceleration image, search selection, depth correction) against code that is proven
 // exact by the unit tests.
 //
@@ -114,7 +115,7 @@ const std::map<std::string, Search>& CpuSearches()
   static const std::map<std::string, Search> searches = {
     { "Linear",
       [](mirror::ReliefRay ray, int linear, int) {
-        return mirror::reliefSearchLinear(ray, linear);
+        return mirror::reliefSearchLinear(ray, linear, 0);
       } },
     { "LinearBinary",
       [](mirror::ReliefRay ray, int linear, int binary) {
@@ -125,13 +126,13 @@ const std::map<std::string, Search>& CpuSearches()
         return mirror::reliefSearchSecant(ray, linear, binary);
       } },
     { "ExactDDA",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchExactDDA(ray); } },
+      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchExactDDA(ray, 0, 0); } },
     { "MaximumMipmap",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchMaximumMipmap(ray); } },
+      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchMaximumMipmap(ray, 0, 0); } },
     { "SafetyRadius",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchSafetyRadius(ray); } },
+      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchSafetyRadius(ray, 0, 0); } },
     { "ConeStep",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchConeStep(ray); } },
+      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchConeStep(ray, 0, 0); } },
   };
   return searches;
 }
@@ -213,25 +214,9 @@ struct View
   }
 };
 
-// A direction of the model (identity actor) in view coordinates.
-glm::vec3 ViewDirection(const View& view, const double model[3])
-{
-  const double in[4] = { model[0], model[1], model[2], 0.0 };
-  double out[4];
-  view.WorldToView->MultiplyPoint(in, out);
-  return glm::vec3(float(out[0]), float(out[1]), float(out[2]));
-}
-
-// The frame of the square, as vtkReliefVertexImpl.glsl passes it on (constant over a
-// flat, unscaled square, so interpolation leaves it as it is).
-struct Frame
-{
-  glm::vec3 Normal;
-  glm::vec3 Tangent;
-  glm::vec2 Scale;
-};
-
-Frame SquareFrame(const View& view, vtkPolyData* surface)
+// The vertex stage's basis of the square (vtkReliefTangentBasis.glsl), constant over a
+// flat, unscaled square, so interpolation leaves it as it is.
+mirror::ReliefTangentVertex SquareBasis(const View& view, vtkPolyData* surface)
 {
   vtkPointData* points = surface->GetPointData();
   double normal[3];
@@ -240,23 +225,20 @@ Frame SquareFrame(const View& view, vtkPolyData* surface)
   points->GetTangents()->GetTuple(0, tangent);
   double scale[2];
   points->GetArray(vtkReliefTangentFrameFilter::TextureScaleArrayName())->GetTuple(0, scale);
-  // the vertex shader's unit, perpendicular model axes and their view images
-  const glm::vec3 unitNormal =
-    glm::normalize(glm::vec3(float(normal[0]), float(normal[1]), float(normal[2])));
-  const glm::vec3 tangentMC = glm::vec3(float(tangent[0]), float(tangent[1]), float(tangent[2]));
-  const glm::vec3 unitTangent =
-    glm::normalize(tangentMC - unitNormal * glm::dot(unitNormal, tangentMC));
-  const glm::vec3 bitangent = glm::cross(unitNormal, unitTangent);
-  const double unitTangentD[3] = { unitTangent.x, unitTangent.y, unitTangent.z };
-  const double bitangentD[3] = { bitangent.x, bitangent.y, bitangent.z };
-  const double normalD[3] = { unitNormal.x, unitNormal.y, unitNormal.z };
-  Frame frame;
-  // the view transform turns without stretching: its normal matrix is its direction matrix
-  frame.Normal = ViewDirection(view, normalD);
-  frame.Tangent = ViewDirection(view, unitTangentD);
-  frame.Scale = glm::vec2(float(scale[0]) * glm::length(frame.Tangent),
-    float(scale[1]) * glm::length(ViewDirection(view, bitangentD)));
-  return frame;
+  // the model is the world (an identity actor): model to view is the camera's turn, which
+  // is its own normal matrix
+  glm::mat3 directions;
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      directions[column][row] = float(view.WorldToView->GetElement(row, column));
+    }
+  }
+  return mirror::reliefTangentVertex(glm::vec3(float(normal[0]), float(normal[1]), float(normal[2])),
+    glm::vec3(float(tangent[0]), float(tangent[1]), float(tangent[2])),
+    glm::vec2(float(scale[0]), float(scale[1])), glm::transpose(glm::inverse(directions)),
+    directions);
 }
 
 // One sampled pixel as the fragment shader sees it.
@@ -335,7 +317,8 @@ double ReliefDepthAt(const View& view, const Fragment& fragment, double x, doubl
 }
 
 Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLReliefMapper* mapper,
-  const View& view, const Frame& frame, const Maps& maps, const std::vector<float>& zbuffer)
+  const View& view, const mirror::ReliefTangentVertex& vertex, const Maps& maps,
+  const std::vector<float>& zbuffer)
 {
   const Search& search = CpuSearches().at(method);
   const glm::vec2 size(float(maps.Field.Width), float(maps.Field.Height));
@@ -352,24 +335,26 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
       {
         continue;
       }
-      // vtkReliefFragmentImpl.glsl, in float as there
-      const glm::vec3 frameN = glm::normalize(frame.Normal);
-      const glm::vec3 frameT =
-        glm::normalize(frame.Tangent - frameN * glm::dot(frameN, frame.Tangent));
-      const glm::vec3 frameB = glm::cross(frameN, frameT);
-      const glm::vec3 positionVC(float(fragment.PositionVC[0]), float(fragment.PositionVC[1]),
+      // vtkReliefFragmentImpl.glsl's calls of the frame, in float as there
+      mirror::ReliefFragment pixel{};
+      pixel.positionVC = glm::vec3(float(fragment.PositionVC[0]), float(fragment.PositionVC[1]),
         float(fragment.PositionVC[2]));
-      const glm::vec3 viewVC = glm::normalize(positionVC);
-      const glm::vec3 direction(glm::dot(viewVC, frameT) / frame.Scale.x,
-        glm::dot(viewVC, frameB) / frame.Scale.y, -glm::dot(viewVC, frameN) / depthScale);
-      const mirror::ReliefRay ray = mirror::reliefViewRay(fragment.TCoord, direction);
+      pixel.viewVC = glm::normalize(pixel.positionVC);
+      pixel.tcoord = fragment.TCoord;
+      pixel.frontFacing = true;
+      pixel.depthScale = depthScale;
+      pixel.eyeDistance = glm::length(pixel.positionVC);
+      const mirror::ReliefFrame frame = mirror::reliefTangentFrame(
+        mirror::reliefTangentBasis(vertex.normal, vertex.tangent, vertex.textureScale, true));
+      const mirror::ReliefRay ray = mirror::reliefFrameViewRay(frame, pixel);
       const mirror::ReliefHit hit = search(ray, mapper->GetLinearSteps(), mapper->GetBinarySteps());
-      const float descent = std::max(-glm::dot(viewVC, frameN), 1e-6f);
+      const double distance = mirror::reliefFrameHitDistance(frame, pixel, ray, hit);
+      const glm::vec3 viewVC = pixel.viewVC;
+      const float descent = std::max(-glm::dot(viewVC, frame.normal), 1e-6f);
       double hitVC[3];
       for (int k = 0; k < 3; ++k)
       {
-        hitVC[k] =
-          fragment.PositionVC[k] + viewVC[k] * (double(hit.position.z) * depthScale / descent);
+        hitVC[k] = fragment.PositionVC[k] + viewVC[k] * distance;
       }
 
       // the GPU's hit, brought back from its window depth to the ray's relief depth
@@ -455,8 +440,8 @@ int TestReliefGpuMatchesCpu(int, char*[])
       }
       window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
       PrepareMaps(method, mapper, maps);
-      const Frame frame = SquareFrame(view, mapper->GetReliefSurface());
-      const Comparison result = Compare(scene, method, mapper, view, frame, maps, zbuffer);
+      const mirror::ReliefTangentVertex vertex = SquareBasis(view, mapper->GetReliefSurface());
+      const Comparison result = Compare(scene, method, mapper, view, vertex, maps, zbuffer);
       const double share = result.Compared ? double(result.Agreeing) / result.Compared : 0.0;
       std::cout << "  " << std::setw(14) << std::left << method << std::right
                 << " pixels compared " << result.Compared << ", agreeing " << std::fixed

@@ -124,19 +124,57 @@ inline vec4 CellDepths(vec2 cell)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
 #define RELIEF_CONE_STEP(cell) CurrentConeMap->At(cell)
 #define RELIEF_SAFETY_RADIUS(cell) CurrentRadii->At(cell)
-// the exact distance of the quadric frame is compiled in, as the quadric mapper's exact
-// mode does; rays without its terms read as without it
-#define RELIEF_EXACT_DISTANCE
-// shader functions are not inline: one copy per test source
+// The shader sources, compiled once for each frame in each configuration its defines
+// allow (shader functions are not inline: one copy per test source). The searches come
+// with every frame, as in the shader: a ray's reads depend on RELIEF_EXACT_DISTANCE.
+// Tangent, the flat tangent frame, is also the namespace's own: searches on straight rays.
+inline namespace Tangent
+{
 namespace
 {
-#include "vtkReliefCommon.glsl"
-#include "vtkReliefSearch.glsl"
-#include "vtkReliefGridSearch.glsl"
-#include "vtkReliefSafetySearch.glsl"
-#include "vtkReliefConeSearch.glsl"
-#include "vtkReliefQuadric.glsl"
-#include "vtkReliefSearchMethod.glsl"
+#define RELIEF_MIRROR_FRAME "vtkReliefTangentFrame.glsl"
+#include "ReliefCpuMirrorSources.h"
+}
+}
+/// The quadric frame, measuring depth along the normal (Eq. 7)
+namespace Quadric
+{
+namespace
+{
+#define RELIEF_MIRROR_FRAME "vtkReliefQuadricFrame.glsl"
+#include "ReliefCpuMirrorSources.h"
+}
+}
+/// The quadric frame with its exact distance (Eq. 6), where it applies
+namespace QuadricExact
+{
+namespace
+{
+#define RELIEF_EXACT_DISTANCE
+#define RELIEF_MIRROR_FRAME "vtkReliefQuadricFrame.glsl"
+#include "ReliefCpuMirrorSources.h"
+#undef RELIEF_EXACT_DISTANCE
+}
+}
+/// The derivative frame on the face's own normal
+namespace Derivative
+{
+namespace
+{
+#define RELIEF_MIRROR_FRAME "vtkReliefDerivativeFrame.glsl"
+#include "ReliefCpuMirrorSources.h"
+}
+}
+/// The derivative frame along interpolated vertex normals
+namespace DerivativeNormals
+{
+namespace
+{
+#define RELIEF_VERTEX_NORMALS
+#define RELIEF_MIRROR_FRAME "vtkReliefDerivativeFrame.glsl"
+#include "ReliefCpuMirrorSources.h"
+#undef RELIEF_VERTEX_NORMALS
+}
 }
 #undef RELIEF_DEPTH
 #undef RELIEF_DEPTH_SIZE
@@ -145,7 +183,6 @@ namespace
 #undef RELIEF_PYRAMID_TOP
 #undef RELIEF_CONE_STEP
 #undef RELIEF_SAFETY_RADIUS
-#undef RELIEF_EXACT_DISTANCE
 }
 
 #endif

@@ -317,7 +317,7 @@ TEST_F(ReliefConeStep, MatchesTheReferenceEverywhere)
 {
   // exact: the walk that ends every bracket leaves only float rounding, as for ExactDDA
   ExpectExact(*AllScenes, "ConeStep",
-    [](const ReliefRay& ray) { return reliefSearchConeStep(ray); }, Tolerance,
+    [](const ReliefRay& ray) { return reliefSearchConeStep(ray, 0, 0); }, Tolerance,
     [](const Scene& scene) { CurrentConeMap = &(*ConeMaps)[Find(scene.Name)]; });
 }
 
@@ -369,9 +369,9 @@ TEST_F(ReliefConeStep, ClassicTexelCentreConesFailOnTheBilinearField)
     {
       const double reference = ReferenceHit(scene.Field, ray);
       CurrentConeMap = &(*ConeMaps)[k];
-      const ReliefHit robust = reliefSearchConeStep(ray);
+      const ReliefHit robust = reliefSearchConeStep(ray, 0, 0);
       CurrentConeMap = &classicMap;
-      const ReliefHit classicHit = reliefSearchConeStep(ray);
+      const ReliefHit classicHit = reliefSearchConeStep(ray, 0, 0);
       robustWrong += HitError(scene.Field, ray, robust.t, reference) > Tolerance ? 1 : 0;
       if (HitError(scene.Field, ray, classicHit.t, reference) > Tolerance && classicWrong++ == 0)
       {
@@ -400,7 +400,7 @@ TEST_F(ReliefConeStep, AFloorAtTheDeepestLevelIsMetAtTheEndOfTheRay)
   CurrentConeMap = &cones;
   for (const ReliefRay& ray : ViewRays(300, 0.1f))
   {
-    const ReliefHit hit = reliefSearchConeStep(ray);
+    const ReliefHit hit = reliefSearchConeStep(ray, 0, 0);
     ASSERT_TRUE(hit.hit);
     ASSERT_NEAR(hit.t, 1.0f, 1e-5f);
     ASSERT_LT(hit.clear.z, hit.position.z);
@@ -416,8 +416,8 @@ TEST_F(ReliefConeStep, TakesFarFewerSamplesThanExactDDAOnSmoothFieldsAndTerrain)
     long cone = 0;
     for (const ReliefRay& ray : ViewRays(300 + unsigned(k), 0.1f))
     {
-      dda += reliefSearchExactDDA(ray).samples;
-      cone += reliefSearchConeStep(ray).samples;
+      dda += reliefSearchExactDDA(ray, 0, 0).samples;
+      cone += reliefSearchConeStep(ray, 0, 0).samples;
     }
     const std::string& name = (*AllScenes)[k].Name;
     std::cout << name << ": samples per ray, ExactDDA " << double(dda) / RayCount
@@ -432,7 +432,7 @@ TEST_F(ReliefConeStep, TakesFarFewerSamplesThanExactDDAOnSmoothFieldsAndTerrain)
 TEST_F(ReliefConeStep, KeepsItsHitsOnGrazingRaysThousandsOfCellsLong)
 {
   ExpectGrazingHits(*AllScenes, "ConeStep",
-    [](const ReliefRay& ray) { return reliefSearchConeStep(ray); },
+    [](const ReliefRay& ray) { return reliefSearchConeStep(ray, 0, 0); },
     [](const Scene& scene) { CurrentConeMap = &(*ConeMaps)[Find(scene.Name)]; });
 }
 

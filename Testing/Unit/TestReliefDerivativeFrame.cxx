@@ -2,6 +2,8 @@
 // the source the GPU compiles: the texture axes it solves from screen-space derivatives
 // must reproduce a triangle's exact affine texture mapping, skewed or not, against a
 // face or a tilted interpolated normal, and say where the derivatives hold no mapping.
+#include "ReliefCpuMirror.h"
+
 #include <glm/glm.hpp>
 
 #include <gtest/gtest.h>
@@ -12,11 +14,8 @@
 
 namespace
 {
-namespace Shader
-{
-using namespace glm;
-#include "vtkReliefDerivativeFrame.glsl"
-}
+// the frame's source as the GPU compiles it; its axes do not depend on the normals' define
+namespace Shader = ReliefCpuMirror::DerivativeNormals;
 using glm::dot;
 using glm::vec2;
 using glm::vec3;
@@ -181,5 +180,53 @@ TEST(ReliefDerivativeFrame, UnitOrFallsBackOnVectorsWithoutDirection)
   EXPECT_EQ(Shader::reliefUnitOr(vec3(0.0f), fallback), fallback);
   EXPECT_EQ(
     Shader::reliefUnitOr(vec3(std::numeric_limits<float>::quiet_NaN()), fallback), fallback);
+}
+
+// A fragment of the face z = 0 seen along `view`, pixel steps along x and y, for
+// either configuration's mirror.
+template <typename Fragment>
+Fragment FaceFragment(vec3 view)
+{
+  Fragment fragment{};
+  fragment.positionVC = vec3(0.0f, 0.0f, -1.0f);
+  fragment.viewVC = view;
+  fragment.positionAlongX = vec3(0.01f, 0.0f, 0.0f);
+  fragment.positionAlongY = vec3(0.0f, 0.01f, 0.0f);
+  fragment.tcoordAlongX = vec2(0.02f, 0.0f);
+  fragment.tcoordAlongY = vec2(0.0f, 0.02f);
+  fragment.frontFacing = true;
+  fragment.depthScale = 0.05f;
+  return fragment;
+}
+
+TEST(ReliefDerivativeFrame, DepthFollowsTheVertexNormalOnlyWhereTheMeshHasThem)
+{
+  // the face's frame ignores a vertex normal; the smooth frame measures depth along it
+  // while it faces the viewer, and along the face's normal where it turns away
+  namespace face = ReliefCpuMirror::Derivative;
+  namespace smooth = ReliefCpuMirror::DerivativeNormals;
+  const vec3 view = glm::normalize(vec3(0.3f, 0.0f, -1.0f));
+  const vec3 tilted = glm::normalize(vec3(0.2f, 0.0f, 1.0f));
+  const face::ReliefFrame flat = face::reliefDerivativeFrame(FaceFragment<face::ReliefFragment>(view), tilted);
+  EXPECT_TRUE(flat.usable);
+  EXPECT_EQ(flat.normal, vec3(0.0f, 0.0f, 1.0f));
+  const auto fragment = FaceFragment<smooth::ReliefFragment>(view);
+  const smooth::ReliefFrame frame = smooth::reliefDerivativeFrame(fragment, tilted);
+  EXPECT_TRUE(frame.usable);
+  EXPECT_NEAR(glm::length(frame.normal - tilted), 0.0f, 1e-6f);
+  // the axes stay perpendicular to the normal depth is measured along
+  EXPECT_NEAR(dot(frame.axisU, frame.normal), 0.0f, 1e-5f);
+  // a normal turned away from the viewer: the face's
+  const vec3 away = glm::normalize(vec3(0.99f, 0.0f, 0.1f));
+  EXPECT_EQ(smooth::reliefDerivativeFrame(fragment, away).normal, vec3(0.0f, 0.0f, 1.0f));
+  // a flat frame's view ray descends one unit of depth per unit of t, and the hit's
+  // distance is its depth over the ray's descent
+  const smooth::ReliefRay ray = smooth::reliefFrameViewRay(frame, fragment);
+  EXPECT_FLOAT_EQ(ray.direction.z, 1.0f);
+  smooth::ReliefHit hit{};
+  hit.position = smooth::reliefRayAt(ray, 0.5f);
+  EXPECT_NEAR(smooth::reliefFrameHitDistance(frame, fragment, ray, hit),
+    0.5f * fragment.depthScale / -dot(view, frame.normal), 1e-6f);
+  EXPECT_FALSE(smooth::reliefFrameRayLeft(frame, ray, hit));
 }
 }

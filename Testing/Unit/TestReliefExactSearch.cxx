@@ -56,26 +56,26 @@ TEST_F(ReliefExactSearch, ReferenceCatchesTheSaddleThatRasterizationMisses)
   EXPECT_GT(t, 0.2);
   EXPECT_LT(t, 0.5);
   CurrentField = &saddle;
-  EXPECT_NEAR(reliefSearchExactDDA(ray).t, t, 1e-4);
+  EXPECT_NEAR(reliefSearchExactDDA(ray, 0, 0).t, t, 1e-4);
 }
 
 TEST_F(ReliefExactSearch, ExactDDAMatchesTheReferenceEverywhere)
 {
-  ExpectExact(*AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray); });
+  ExpectExact(*AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray, 0, 0); });
 }
 
 TEST_F(ReliefExactSearch, MaximumMipmapMatchesTheReferenceEverywhere)
 {
   ExpectExact(*AllScenes, "MaximumMipmap",
-    [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray); });
+    [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray, 0, 0); });
 }
 
 TEST_F(ReliefExactSearch, ExactSearchesKeepTheirHitsOnGrazingRaysThousandsOfCellsLong)
 {
   ExpectGrazingHits(
-    *AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray); });
+    *AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray, 0, 0); });
   ExpectGrazingHits(*AllScenes, "MaximumMipmap",
-    [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray); });
+    [](const ReliefRay& ray) { return reliefSearchMaximumMipmap(ray, 0, 0); });
 }
 
 TEST_F(ReliefExactSearch, MaximumMipmapTakesFewerSamplesThanExactDDAAtGrazingAngles)
@@ -89,8 +89,8 @@ TEST_F(ReliefExactSearch, MaximumMipmapTakesFewerSamplesThanExactDDAAtGrazingAng
   {
     const ReliefRay ray =
       reliefViewRay(vec2(entry(generator), entry(generator)), vec3(2.0f, 0.7f, 1.0f));
-    dda += reliefSearchExactDDA(ray).samples;
-    mipmap += reliefSearchMaximumMipmap(ray).samples;
+    dda += reliefSearchExactDDA(ray, 0, 0).samples;
+    mipmap += reliefSearchMaximumMipmap(ray, 0, 0).samples;
   }
   EXPECT_LT(mipmap, dda / 2) << "DDA " << dda << ", maximum mipmap " << mipmap;
 }
@@ -103,7 +103,7 @@ TEST_F(ReliefExactSearch, AFloorAtTheDeepestLevelIsMetAtTheEndOfTheRay)
   Use(floor);
   for (const ReliefRay& ray : ViewRays(300, 0.1f))
   {
-    for (const ReliefHit& hit : { reliefSearchExactDDA(ray), reliefSearchMaximumMipmap(ray) })
+    for (const ReliefHit& hit : { reliefSearchExactDDA(ray, 0, 0), reliefSearchMaximumMipmap(ray, 0, 0) })
     {
       ASSERT_TRUE(hit.hit);
       ASSERT_NEAR(hit.t, 1.0f, 1e-5f);
@@ -124,7 +124,7 @@ TEST_F(ReliefExactSearch, FixedStepMethodsMissRatesAreMeasured)
     for (const ReliefRay& ray : ViewRays(seed++, 0.1f))
     {
       const double reference = ReferenceHit(scene.Field, ray);
-      const ReliefHit hits[3] = { reliefSearchLinear(ray, 10), reliefSearchLinearBinary(ray, 10, 5),
+      const ReliefHit hits[3] = { reliefSearchLinear(ray, 10, 0), reliefSearchLinearBinary(ray, 10, 5),
         reliefSearchSecant(ray, 10, 5) };
       for (int k = 0; k < 3; ++k)
       {

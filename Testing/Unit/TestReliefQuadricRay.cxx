@@ -1,6 +1,7 @@
-// The quadric frame's view ray (vtkReliefQuadric.glsl, seed 000 s3.1-3.3), run on the CPU
-// through the same source the GPU compiles: its depth below the quadric, its search
-// range, the silhouette test, and the sampled searches following it.
+// The quadric frame's view ray (vtkReliefQuadricFrame.glsl; Oliveira and Policarpo 2005,
+// s3.1-3.3), run on the CPU through the same source the GPU compiles: its depth below the
+// quadric, its search range, the silhouette test, the sampled searches following it, and
+// the frame interface in both distance modes.
 #include "ReliefCpuMirror.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +12,12 @@
 
 namespace
 {
-using namespace ReliefCpuMirror;
+using namespace glm;
+using ReliefCpuMirror::CurrentField;
+using ReliefCpuMirror::DepthField;
+// compiled with the exact distance, as the quadric mapper's exact mode is: rays without
+// its terms read as without it
+using namespace ReliefCpuMirror::QuadricExact;
 
 constexpr float DepthScale = 0.05f;
 const vec2 Scale(0.5f, 0.25f); // world length of one texture unit along x and y
@@ -193,7 +199,7 @@ TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)
     {
       const ReliefHit hit = method == 0 ? reliefSearchLinearBinary(curved.Ray, 64, 16)
         : method == 1                   ? reliefSearchSecant(curved.Ray, 64, 8)
-                                        : reliefSearchLinear(curved.Ray, 2048);
+                                        : reliefSearchLinear(curved.Ray, 2048, 0);
       if (deepest < 0.4 - 1e-3)
       {
         ASSERT_FALSE(hit.hit) << "method " << method;
@@ -272,4 +278,74 @@ TEST_F(ReliefQuadricRay, TheExactDistanceIsMeasuredPerpendicularToTheRay)
       }
     }
   }
+}
+
+// A front-facing fragment seen along `view` and its tangent basis, the axes of the
+// frame, for either distance mode's mirror.
+template <typename Fragment>
+Fragment FragmentSeenAlong(vec3 view)
+{
+  Fragment fragment{};
+  fragment.positionVC = vec3(0.0f, 0.0f, -2.0f);
+  fragment.viewVC = view;
+  fragment.tcoord = vec2(0.3f, 0.6f);
+  fragment.frontFacing = true;
+  fragment.depthScale = DepthScale;
+  fragment.eyeDistance = 2.0f;
+  return fragment;
+}
+
+template <typename Basis>
+Basis AxisBasis()
+{
+  Basis basis;
+  basis.normal = vec3(0.0f, 0.0f, 1.0f);
+  basis.tangent = vec3(1.0f, 0.0f, 0.0f);
+  basis.bitangent = vec3(0.0f, 1.0f, 0.0f);
+  basis.textureScale = Scale;
+  return basis;
+}
+
+TEST_F(ReliefQuadricRay, TheFrameMeasuresEachModesDistance)
+{
+  // the frame interface as the fragment body calls it: the approximate mode's view ray
+  // is Eq. 7's everywhere; the exact mode's differs where both curvatures bend away
+  namespace approximate = ReliefCpuMirror::Quadric;
+  namespace exact = ReliefCpuMirror::QuadricExact;
+  int differing = 0;
+  for (vec2 quadric : { vec2(-0.8f, -0.5f), vec2(0.6f, -0.4f), vec2(0.5f, 0.3f) })
+  {
+    const bool convex = quadric.x < 0.0f && quadric.y < 0.0f;
+    for (float tilt : { 0.4f, 1.0f })
+    {
+      const vec3 view = View(tilt, 0.9f);
+      const auto fragment = FragmentSeenAlong<approximate::ReliefFragment>(view);
+      const auto exactFragment = FragmentSeenAlong<exact::ReliefFragment>(view);
+      const approximate::ReliefRay ray = approximate::reliefFrameViewRay(
+        approximate::reliefQuadricFrame(
+          AxisBasis<approximate::ReliefTangentBasis>(), quadric, fragment),
+        fragment);
+      const exact::ReliefRay exactRay = exact::reliefFrameViewRay(
+        exact::reliefQuadricFrame(AxisBasis<exact::ReliefTangentBasis>(), quadric, exactFragment),
+        exactFragment);
+      const CurvedRay reference = MakeRay(view, quadric);
+      for (float t : { 0.2f, 0.5f, 0.9f })
+      {
+        const float vertical = approximate::reliefRayAt(ray, t).z;
+        const double expected = DepthBelow(view, quadric, double(t) * reference.Range);
+        EXPECT_NEAR(vertical, expected, 1e-4 * std::max(1.0, std::abs(expected)))
+          << "a " << quadric.x << ", b " << quadric.y << ", tilt " << tilt << ", t " << t;
+        const float measured = exact::reliefRayAt(exactRay, t).z;
+        if (convex)
+        {
+          differing += std::abs(measured - vertical) > 1e-4f;
+        }
+        else
+        {
+          EXPECT_EQ(measured, vertical);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(differing, 6); // every convex case: 2 tilts, 3 points
 }

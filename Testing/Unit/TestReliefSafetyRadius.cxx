@@ -133,7 +133,7 @@ Tally SearchWithin(
   Tally tally;
   for (const ReliefRay& ray : ViewRays(seed, 0.1f))
   {
-    const ReliefHit hit = reliefSearchSafetyRadius(ray);
+    const ReliefHit hit = reliefSearchSafetyRadius(ray, 0, 0);
     tally.Samples += hit.samples;
     const double first = ReferenceHit(scene.Field, ray);
     const double deep = ReferenceHit(deeper, ray);
@@ -167,10 +167,10 @@ TEST_F(ReliefSafetyRadius, ExactOnEveryRayAtZeroTolerance)
               << 100.0 * ZeroShare(radii[scene.Name]) << "% zero\n";
   }
   ExpectExact(
-    *AllScenes, "SafetyRadius", [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray); },
+    *AllScenes, "SafetyRadius", [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray, 0, 0); },
     Tolerance, [&radii](const Scene& scene) { CurrentRadii = &radii[scene.Name]; });
   ExpectGrazingHits(*AllScenes, "SafetyRadius",
-    [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray); },
+    [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray, 0, 0); },
     [&radii](const Scene& scene) { CurrentRadii = &radii[scene.Name]; });
 }
 
@@ -324,14 +324,14 @@ TEST_F(ReliefSafetyRadius, GrazingRaysKeepTheirHits)
         const float azimuth = 2.0f * float(Pi) * unit(generator);
         const ReliefRay ray = reliefViewRay(vec2(unit(generator), unit(generator)),
           vec3(std::cos(azimuth), std::sin(azimuth), k % 2 ? 1e-3f : 1e-6f));
-        const ReliefHit hit = reliefSearchSafetyRadius(ray);
+        const ReliefHit hit = reliefSearchSafetyRadius(ray, 0, 0);
         const double first = ReferenceHit(scene.Field, ray);
         const double last = tolerance > 0.0 ? ReferenceHit(deeper, ray) : first;
         const double slack = 2e-3 / ray.direction.z; // 2e-3 in depth
         ASSERT_TRUE(hit.hit) << scene.Name;
         EXPECT_GE(hit.t, first - slack) << scene.Name << ", e " << tolerance;
         EXPECT_LE(hit.t, last + slack) << scene.Name << ", e " << tolerance;
-        driftingDDA += std::abs(reliefSearchExactDDA(ray).t - first) > slack ? 1 : 0;
+        driftingDDA += std::abs(reliefSearchExactDDA(ray, 0, 0).t - first) > slack ? 1 : 0;
       }
       std::cout << scene.Name << ", e " << tolerance << ": ExactDDA off by more than 2e-3 "
                 << "in depth on " << driftingDDA << " of 20 grazing rays\n";
@@ -370,8 +370,8 @@ TEST_F(ReliefSafetyRadius, SamplesDoNotGrowWithResolution)
       long exact = 0;
       for (const ReliefRay& ray : rays)
       {
-        safe += reliefSearchSafetyRadius(ray).samples;
-        exact += reliefSearchExactDDA(ray).samples;
+        safe += reliefSearchSafetyRadius(ray, 0, 0).samples;
+        exact += reliefSearchExactDDA(ray, 0, 0).samples;
       }
       safety[doubled] = double(safe) / rays.size();
       dda[doubled] = double(exact) / rays.size();

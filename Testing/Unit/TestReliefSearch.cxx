@@ -101,7 +101,7 @@ TEST_F(ReliefSearch, ConstantDepthPlaneIsFoundWithinTheStepBounds)
       const ReliefHit linearBinary = reliefSearchLinearBinary(ray, 10, 5);
       ASSERT_TRUE(linearBinary.hit);
       ASSERT_NEAR(linearBinary.position.z, depth, LinearBinaryBound(10, 5));
-      const ReliefHit linear = reliefSearchLinear(ray, 10);
+      const ReliefHit linear = reliefSearchLinear(ray, 10, 0);
       ASSERT_TRUE(linear.hit);
       ASSERT_GE(linear.position.z, depth - 1e-6f);
       ASSERT_LT(linear.position.z, depth + 0.1f + 1e-6f);
@@ -113,7 +113,7 @@ TEST_F(ReliefSearch, SamplesAreCountedAndTheLinearSearchStopsAtTheFirstHit)
 {
   this->Use(DepthField::FromFunction(8, 8, [](float, float) { return 0.35f; }));
   const ReliefRay ray = reliefViewRay(vec2(0.5f), vec3(0.1f, 0.0f, 1.0f));
-  EXPECT_EQ(reliefSearchLinear(ray, 10).samples, 4);           // steps 0.1 .. 0.4
+  EXPECT_EQ(reliefSearchLinear(ray, 10, 0).samples, 4);           // steps 0.1 .. 0.4
   EXPECT_EQ(reliefSearchLinearBinary(ray, 10, 5).samples, 9);  // then 5 bisections
   EXPECT_EQ(reliefSearchLinearBinary(ray, 20, 0).samples, 7);  // steps 0.05 .. 0.35
 }
@@ -130,7 +130,7 @@ TEST_F(ReliefSearch, SlopeIsRecoveredAnalytically)
     const float expected = (a + b * ray.origin.x) / (1.0f - b * ray.direction.x);
     ASSERT_NEAR(reliefSearchLinearBinary(ray, 10, 5).t, expected, LinearBinaryBound(10, 5));
     ASSERT_NEAR(reliefSearchLinearBinary(ray, 32, 8).t, expected, LinearBinaryBound(32, 8));
-    const float linear = reliefSearchLinear(ray, 10).t;
+    const float linear = reliefSearchLinear(ray, 10, 0).t;
     ASSERT_GE(linear, expected - 1e-5f);
     ASSERT_LT(linear, expected + 0.1f + 1e-5f);
   }
@@ -180,7 +180,7 @@ TEST_F(ReliefSearch, FlatSurfaceNeverShadowsItself)
   for (const ReliefRay& ray : RandomViewRays(0.0f, 1.0f, 2.0f, 7))
   {
     const vec3 toLight(slope(generator), slope(generator), -1.0f);
-    const ReliefHit linear = reliefSearchLinear(ray, 10);
+    const ReliefHit linear = reliefSearchLinear(ray, 10, 0);
     ASSERT_EQ(reliefLightVisibility(linear.clear, toLight, 10), 1.0f);
     const ReliefHit linearBinary = reliefSearchLinearBinary(ray, 10, 5);
     ASSERT_EQ(reliefLightVisibility(linearBinary.clear, toLight, 10), 1.0f);
@@ -216,7 +216,7 @@ TEST_F(ReliefSearch, DomesLitFromALowAngleHaveNoShadowAcne)
   for (const ReliefRay& ray : RandomViewRays(0.25f, 0.75f, 0.6f, 6))
   {
     const ReliefHit hit = reliefSearchLinearBinary(ray, 32, 5);
-    const ReliefHit coarse = reliefSearchLinear(ray, 32);
+    const ReliefHit coarse = reliefSearchLinear(ray, 32, 0);
     const vec2 offset = vec2(hit.position.x - 0.5f, hit.position.y - 0.5f) / radius;
     const float r2 = dot(offset, offset);
     if (r2 > 0.9f)

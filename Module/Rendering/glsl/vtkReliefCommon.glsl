@@ -110,3 +110,59 @@ vec2 reliefGridAt(ReliefGridRay grid, float t)
 {
   return vec2(grid.origin.x + t * grid.direction.x, grid.origin.y + t * grid.direction.y);
 }
+
+// The frame interface. A frame (one file, vtkRelief*Frame.glsl, named by its mapper)
+// turns a fragment's view ray into a ray in relief texture space and tells the fragment
+// body where the hit lies; the body calls nothing else of it. A frame file defines
+//   struct ReliefFrame, with at least
+//     vec3 axisU, axisV: gradients of u and v in view space (a view-space direction d
+//                        moves (u, v) by (dot(d, axisU), dot(d, axisV)))
+//     vec3 normal:       the unit normal relief depth is measured along; with the axes,
+//                        the shading basis
+//     bool usable:       false where the frame holds no texture mapping (shaded plainly)
+//   ReliefFrame reliefFrameOf(ReliefFragment fragment): the frame at a fragment, from the
+//     frame's interpolated vertex data (fragment stage only)
+//   bool reliefFrameHides(ReliefFrame, ReliefFragment): the fragment shows nothing
+//   ReliefRay reliefFrameViewRay(ReliefFrame, ReliefFragment): its view ray
+//   bool reliefFrameRayLeft(ReliefFrame, ReliefRay, ReliefHit): the ray that met nothing
+//     left the surface past an outline (the fragment shows what lies behind)
+//   float reliefFrameHitDistance(ReliefFrame, ReliefFragment, ReliefRay, ReliefHit): the
+//     world distance from the fragment's point to the hit along the view direction
+//   vec3 reliefFrameSurfaceSlope(ReliefFrame, ReliefFragment, float distance): the tilt
+//     of the reference surface that far along the view ray (zero for flat frames)
+// and, for the other stages, reliefFrameVertex() (vertex shader, after the position and
+// texture coordinates are written) and the macro reliefFrameGeometry(vertex) (geometry
+// shader, VTK's edges and wide lines: its unsized input arrays take loop indices only). The mapper defines RELIEF_VERTEX_STAGE,
+// RELIEF_GEOMETRY_STAGE or RELIEF_FRAGMENT_STAGE before a frame's file; the CPU mirror
+// defines none and compiles what holds no varyings.
+
+// What every frame knows of its fragment: the rasteriser's and the mapper's part.
+struct ReliefFragment
+{
+  vec3 positionVC;     // the polygon's point, view coordinates
+  vec3 viewVC;         // unit direction from the eye through it
+  vec2 tcoord;         // texture coordinates there: the view ray's entry (finite)
+  vec2 tcoordAlongX;   // their change to the next pixel along screen x (dFdx)
+  vec2 tcoordAlongY;   // and along screen y (dFdy)
+  vec3 positionAlongX; // the position's change to the next pixel along screen x
+  vec3 positionAlongY; // and along screen y
+  bool frontFacing;    // the side the mesh's winding faces is seen
+  bool twoSided;       // back faces carry relief wherever they are drawn
+  float depthScale;    // s_z: world depth of relief depth 1
+  float eyeDistance;   // from the eye to positionVC (1e30 in parallel projection)
+};
+
+// A view-space direction in texture-space units (du, dv, ddepth) of a flat frame with
+// the given axes and normal; depth grows inward.
+vec3 reliefFlatDirection(vec3 directionVC, vec3 axisU, vec3 axisV, vec3 normal, float depthScale)
+{
+  return vec3(dot(directionVC, axisU), dot(directionVC, axisV),
+    -dot(directionVC, normal) / depthScale);
+}
+
+// The world distance along the view direction to a hit of a flat frame's view ray
+// (reliefViewRay of reliefFlatDirection): its depth over the ray's descent.
+float reliefFlatHitDistance(vec3 viewVC, vec3 normal, float depthScale, ReliefHit hit)
+{
+  return hit.position.z * depthScale / max(-dot(viewVC, normal), 1e-6f);
+}

@@ -30,7 +30,7 @@ vec2 reliefConeDecode(vec2 stored, vec2 range)
   return vec2(topCode * (1.0f / 255.0f), ratio);
 }
 
-ReliefHit reliefSearchConeStep(ReliefRay ray)
+ReliefHit reliefSearchConeStep(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
   vec2 signs = reliefStepSigns(grid);

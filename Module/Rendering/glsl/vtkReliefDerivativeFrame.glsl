@@ -1,8 +1,32 @@
-// vtkRelief: a fragment's texture-space axes from screen-space derivatives (seed 003,
-// "Texture coordinate offset calculations"), for meshes without tangents.
-//
-// Written in the GLSL subset GLM also compiles (see vtkReliefCommon.glsl): the unit
-// tests check it on the CPU against triangles' exact texture mappings.
+// vtkRelief: the derivative frame (Hoffman 2012, "Texture coordinate offset
+// calculations"), for vtkOpenGLDerivativeReliefMapper: a fragment's texture-space axes
+// from screen-space derivatives, for meshes without tangents; with RELIEF_VERTEX_NORMALS,
+// depth along the interpolated vertex normal. The frame interface is described in
+// vtkReliefCommon.glsl; written in the GLSL subset GLM also compiles: the unit tests
+// check the axes on the CPU against triangles' exact texture mappings.
+
+#if defined(RELIEF_VERTEX_STAGE)
+#ifdef RELIEF_VERTEX_NORMALS
+in vec3 reliefNormalMC;
+uniform mat3 reliefNormalMatrix; // model to view for normals, without VBO shift/scale
+out vec3 reliefNormalVSOutput;
+#endif
+
+void reliefFrameVertex()
+{
+#ifdef RELIEF_VERTEX_NORMALS
+  reliefNormalVSOutput = reliefNormalMatrix * reliefNormalMC;
+#endif
+}
+#elif defined(RELIEF_GEOMETRY_STAGE)
+#ifdef RELIEF_VERTEX_NORMALS
+in vec3 reliefNormalVSOutput[];
+out vec3 reliefNormalGSOutput;
+#define reliefFrameGeometry(vertex) reliefNormalGSOutput = reliefNormalVSOutput[vertex]
+#else
+#define reliefFrameGeometry(vertex)
+#endif
+#else
 
 struct ReliefAxes
 {
@@ -51,3 +75,79 @@ vec3 reliefUnitOr(vec3 vector, vec3 fallback)
   float size = length(vector);
   return size > 0.0f && !isinf(size) && !isnan(size) ? vector / size : fallback;
 }
+
+struct ReliefFrame
+{
+  vec3 axisU;
+  vec3 axisV;
+  vec3 normal;
+  bool usable;
+};
+
+// The triangle's own mapping, from how position and texture coordinates change from
+// pixel to pixel; its normal faces the viewer. vertexNormal: the interpolated vertex
+// normal (read with RELIEF_VERTEX_NORMALS only).
+ReliefFrame reliefDerivativeFrame(ReliefFragment fragment, vec3 vertexNormal)
+{
+  vec3 faceNormal = cross(fragment.positionAlongX, fragment.positionAlongY);
+  faceNormal = dot(faceNormal, fragment.viewVC) > 0.0f ? -faceNormal : faceNormal;
+  ReliefFrame frame;
+  frame.normal = reliefUnitOr(faceNormal, -fragment.viewVC);
+#ifdef RELIEF_VERTEX_NORMALS
+  // smooth: depth along the interpolated normal, turned to the face's visible side;
+  // near an outline it may still face away from the viewer, and no ray can go in along
+  // it: the face's normal then
+  vec3 smoothNormal = reliefUnitOr(vertexNormal, frame.normal);
+  smoothNormal = dot(smoothNormal, faceNormal) < 0.0f ? -smoothNormal : smoothNormal;
+  frame.normal = dot(smoothNormal, fragment.viewVC) < -1e-3f ? smoothNormal : frame.normal;
+#endif
+  ReliefAxes axes = reliefDerivativeAxes(fragment.positionAlongX, fragment.positionAlongY,
+    fragment.tcoordAlongX, fragment.tcoordAlongY, frame.normal);
+  frame.axisU = axes.u;
+  frame.axisV = axes.v;
+  frame.usable = axes.usable;
+  return frame;
+}
+
+bool reliefFrameHides(ReliefFrame frame, ReliefFragment fragment)
+{
+  return false;
+}
+
+ReliefRay reliefFrameViewRay(ReliefFrame frame, ReliefFragment fragment)
+{
+  return reliefViewRay(fragment.tcoord, reliefFlatDirection(fragment.viewVC, frame.axisU,
+    frame.axisV, frame.normal, fragment.depthScale));
+}
+
+bool reliefFrameRayLeft(ReliefFrame frame, ReliefRay ray, ReliefHit hit)
+{
+  return false;
+}
+
+float reliefFrameHitDistance(ReliefFrame frame, ReliefFragment fragment, ReliefRay ray,
+  ReliefHit hit)
+{
+  return reliefFlatHitDistance(fragment.viewVC, frame.normal, fragment.depthScale, hit);
+}
+
+vec3 reliefFrameSurfaceSlope(ReliefFrame frame, ReliefFragment fragment, float distance)
+{
+  return vec3(0.0f, 0.0f, 0.0f);
+}
+
+#if defined(RELIEF_FRAGMENT_STAGE)
+#ifdef RELIEF_VERTEX_NORMALS
+in vec3 reliefNormalVSOutput;
+#define RELIEF_INTERPOLATED_NORMAL reliefNormalVSOutput
+#else
+#define RELIEF_INTERPOLATED_NORMAL vec3(0.0)
+#endif
+
+ReliefFrame reliefFrameOf(ReliefFragment fragment)
+{
+  return reliefDerivativeFrame(fragment, RELIEF_INTERPOLATED_NORMAL);
+}
+#undef RELIEF_INTERPOLATED_NORMAL
+#endif
+#endif

@@ -19,16 +19,6 @@ uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative de
 uniform mat4 reliefVCDCMatrix;
 in vec3 reliefPositionVSOutput;
 in vec2 reliefTCoordVSOutput;
-#ifdef RELIEF_VERTEX_NORMALS
-in vec3 reliefNormalVSOutput;
-#endif
-#ifdef RELIEF_TANGENT_FRAME
-in vec3 reliefTangentVSOutput;
-in vec2 reliefTextureScaleVSOutput;
-#endif
-#ifdef RELIEF_QUADRIC
-in vec2 reliefQuadricVSOutput;
-#endif
 
 // Derivatives of the entry coordinates, taken once outside the search loops: every read
 // at a ray point uses the mipmap level they give, exactly the level textureGrad with
@@ -108,9 +98,13 @@ vec2 reliefDepthGradient(vec2 uv)
 
 //VTK::Relief::Common
 //VTK::Relief::Search
+#ifndef RELIEF_SEARCH
+#error "no search method: the mapper defines RELIEF_SEARCH as one of the search functions"
+#endif
+//VTK::Relief::Frame
 
-// The frame: gradients of u and v in view space, and the unit normal depth is measured
-// against; a view-space direction d moves (u, v) by (dot(d, reliefAxisU), dot(d, reliefAxisV)).
+// The frame's shading basis, for the lighting: gradients of u and v in view space, and
+// the unit normal depth is measured against.
 vec3 reliefAxisU;
 vec3 reliefAxisV;
 vec3 reliefFrameN;
@@ -119,8 +113,7 @@ ReliefHit reliefViewHit;
 // A view-space direction in texture-space units (du, dv, ddepth); depth grows inward.
 vec3 reliefToTexture(vec3 directionVC)
 {
-  return vec3(dot(directionVC, reliefAxisU), dot(directionVC, reliefAxisV),
-    -dot(directionVC, reliefFrameN) / reliefDepthScale);
+  return reliefFlatDirection(directionVC, reliefAxisU, reliefAxisV, reliefFrameN, reliefDepthScale);
 }
 
 // Visibility (0 or 1) of a light seen from the hit, toLightVC pointing to the light.

@@ -180,7 +180,7 @@ ReliefHit reliefGridEnd(ReliefRay ray, ReliefGridRay grid, int samples)
 }
 
 // ExactDDA: the whole ray, cell by cell.
-ReliefHit reliefSearchExactDDA(ReliefRay ray)
+ReliefHit reliefSearchExactDDA(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
   ReliefHit hit = reliefWalkCells(ray, grid, 0.0f, 1.0f, 0);
@@ -207,7 +207,7 @@ vec2 reliefPyramidParent(vec2 node, int level)
   return min(floor(0.5f * node), vec2(parentSize.x - 1.0f, parentSize.y - 1.0f));
 }
 
-ReliefHit reliefSearchMaximumMipmap(ReliefRay ray)
+ReliefHit reliefSearchMaximumMipmap(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   vec2 size = RELIEF_DEPTH_SIZE;
   ReliefGridRay grid = reliefGridRay(ray, size);

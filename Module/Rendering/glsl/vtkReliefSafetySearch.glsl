@@ -28,7 +28,7 @@ vec2 reliefCellAfter(ReliefGridRay grid, float t, vec2 signs, vec2 inverseRun)
   return cell;
 }
 
-ReliefHit reliefSearchSafetyRadius(ReliefRay ray)
+ReliefHit reliefSearchSafetyRadius(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
   vec2 signs = reliefStepSigns(grid);

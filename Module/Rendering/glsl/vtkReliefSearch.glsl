@@ -62,7 +62,7 @@ ReliefHit reliefHitAt(ReliefRay ray, float t, float above, bool found, int sampl
 }
 
 // Linear search alone: the hit is the first sample below the field.
-ReliefHit reliefSearchLinear(ReliefRay ray, int linearSteps)
+ReliefHit reliefSearchLinear(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
   return reliefHitAt(ray, bracket.below, bracket.above, bracket.found, bracket.samples);
@@ -91,21 +91,21 @@ ReliefHit reliefBinaryRefine(ReliefRay ray, ReliefBracket bracket, int steps)
 }
 
 // Linear then binary search (Policarpo et al. 2005; 10 + 5 steps by default).
-ReliefHit reliefSearchLinearBinary(ReliefRay ray, int linearSteps, int binarySteps)
+ReliefHit reliefSearchLinearBinary(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
   if (!bracket.found)
   {
     return reliefHitAt(ray, 1.0f, bracket.above, false, bracket.samples);
   }
-  return reliefBinaryRefine(ray, bracket, binarySteps);
+  return reliefBinaryRefine(ray, bracket, refinementSteps);
 }
 
 // Linear then secant search (parallax occlusion mapping, Tatarchuk 2006): the crossing
 // is taken where the straight line through the bracket's two gaps meets zero. Each of
-// `refinements` further samples at that point shrinks the bracket (regula falsi, with
-// the Illinois halving so one end cannot stall); 0 refinements is POM exactly.
-ReliefHit reliefSearchSecant(ReliefRay ray, int linearSteps, int refinements)
+// `refinementSteps` further samples at that point shrinks the bracket (regula falsi, with
+// the Illinois halving so one end cannot stall); 0 of them is POM exactly.
+ReliefHit reliefSearchSecant(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefBracket bracket = reliefLinearBracket(ray, linearSteps);
   if (!bracket.found)
@@ -123,7 +123,7 @@ ReliefHit reliefSearchSecant(ReliefRay ray, int linearSteps, int refinements)
   float belowGap = bracket.belowGap;
   int samples = bracket.samples;
   int keptSide = 0; // +1: above was kept last time, -1: below
-  for (int i = 0; i < refinements; ++i)
+  for (int i = 0; i < refinementSteps; ++i)
   {
     float t = above + (below - above) * aboveGap / max(aboveGap - belowGap, 1e-30f);
     float gap = reliefGap(reliefRayAt(ray, t));

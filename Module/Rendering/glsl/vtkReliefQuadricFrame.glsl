@@ -1,6 +1,7 @@
-// vtkRelief: the view ray of the quadric frame (Oliveira and Policarpo 2005, s3.1-3.4),
-// for vtkOpenGLQuadricReliefMapper. Shared with the CPU mirror; see vtkReliefCommon.glsl
-// for the rules.
+// vtkRelief: the quadric frame (Oliveira and Policarpo 2005, s3.1-3.4), for
+// vtkOpenGLQuadricReliefMapper: the interpolated tangent basis (vtkReliefTangentBasis.glsl)
+// with a curved reference surface. The frame interface is described in
+// vtkReliefCommon.glsl; written in the GLSL subset GLM also compiles.
 //
 // Around a fragment the surface is the interpolated quadric z = a x^2 + b y^2 of its
 // tangent frame (x along the tangent, y along the bitangent, z along the normal, world
@@ -20,6 +21,35 @@
 // Eq. 7 elsewhere: where both bend toward the viewer (bowls), where the Gaussian
 // curvature is negative or zero (saddles, cylinders, planes), and when V is the normal
 // (U undefined).
+
+// A vertex's quadric (a, b) in view units, from vtkLocalQuadricFilter's in model units:
+// curvature is 1 / length, so an actor's scale k turns a into a / k; NaN is a plane.
+vec2 reliefQuadricVertex(vec2 quadricMC, vec2 stretch)
+{
+  if (isnan(quadricMC.x) || isnan(quadricMC.y) || isinf(quadricMC.x) || isinf(quadricMC.y))
+  {
+    return vec2(0.0f, 0.0f);
+  }
+  return vec2(quadricMC.x / stretch.x, quadricMC.y / stretch.y);
+}
+
+#if defined(RELIEF_VERTEX_STAGE)
+in vec2 reliefQuadricMC; // (a, b) of vtkLocalQuadricFilter, model units
+out vec2 reliefQuadricVSOutput;
+
+void reliefFrameVertex()
+{
+  ReliefTangentVertex basis = reliefTangentBasisVertex();
+  reliefQuadricVSOutput = reliefQuadricVertex(reliefQuadricMC, basis.stretch);
+}
+#elif defined(RELIEF_GEOMETRY_STAGE)
+in vec2 reliefQuadricVSOutput[];
+out vec2 reliefQuadricGSOutput;
+
+#define reliefFrameGeometry(vertex) \
+  reliefTangentBasisGeometry(vertex); \
+  reliefQuadricGSOutput = reliefQuadricVSOutput[vertex]
+#else
 
 // The quadric's depth terms (A, B) of the view direction `view` in the tangent frame;
 // a grazing ray's descent is held at 1e-3 of its run, as reliefViewRay() does.
@@ -119,3 +149,86 @@ bool reliefQuadricLeaves(ReliefRay ray)
 {
   return reliefRayAt(ray, 1.0f).z < 0.5f;
 }
+
+struct ReliefFrame
+{
+  vec3 axisU;
+  vec3 axisV;
+  vec3 normal;
+  bool usable;
+  vec3 tangent;   // the quadric's x and y axes, view space
+  vec3 bitangent;
+  vec2 textureScale;
+  vec2 quadric;   // (a, b) as the side seen bends: turned for a back face
+  vec2 outward;   // (a, b) as the front side bends, for the back-face test
+  vec3 view;      // the unit view direction in the frame (x, y, z: tangent, bitangent, normal)
+};
+
+ReliefFrame reliefQuadricFrame(ReliefTangentBasis basis, vec2 quadric, ReliefFragment fragment)
+{
+  ReliefFrame frame;
+  frame.axisU = basis.tangent / basis.textureScale.x;
+  frame.axisV = basis.bitangent / basis.textureScale.y;
+  frame.normal = basis.normal;
+  frame.usable = true;
+  frame.tangent = basis.tangent;
+  frame.bitangent = basis.bitangent;
+  frame.textureScale = basis.textureScale;
+  frame.outward = quadric;
+  frame.quadric = fragment.frontFacing ? quadric : -quadric;
+  frame.view = vec3(dot(fragment.viewVC, basis.tangent), dot(fragment.viewVC, basis.bitangent),
+    dot(fragment.viewVC, basis.normal));
+  return frame;
+}
+
+// A back face draws relief only where the ray reaches it from inside the shape.
+bool reliefFrameHides(ReliefFrame frame, ReliefFragment fragment)
+{
+  return !fragment.frontFacing && !fragment.twoSided &&
+    reliefQuadricBehindOutline(
+      reliefQuadricDepthTerms(frame.view, frame.outward, fragment.depthScale),
+      fragment.eyeDistance);
+}
+
+// The straight view ray below the quadric, over the range that is searched.
+ReliefRay reliefFrameViewRay(ReliefFrame frame, ReliefFragment fragment)
+{
+  vec2 terms = reliefQuadricDepthTerms(frame.view, frame.quadric, fragment.depthScale);
+  float range = reliefQuadricRange(terms);
+  ReliefRay ray =
+    reliefQuadricViewRay(fragment.tcoord, frame.view, frame.textureScale, terms, range);
+#ifdef RELIEF_EXACT_DISTANCE
+  ray = reliefQuadricExact(ray, frame.view, frame.quadric, fragment.depthScale, range);
+#endif
+  return ray;
+}
+
+bool reliefFrameRayLeft(ReliefFrame frame, ReliefRay ray, ReliefHit hit)
+{
+  return !hit.hit && reliefQuadricLeaves(ray);
+}
+
+float reliefFrameHitDistance(ReliefFrame frame, ReliefFragment fragment, ReliefRay ray,
+  ReliefHit hit)
+{
+  return hit.t *
+    reliefQuadricRange(reliefQuadricDepthTerms(frame.view, frame.quadric, fragment.depthScale));
+}
+
+// The quadric's slope at the point `distance` along the view ray, in view space.
+vec3 reliefFrameSurfaceSlope(ReliefFrame frame, ReliefFragment fragment, float distance)
+{
+  float slopeX = -2.0f * frame.quadric.x * frame.view.x * distance;
+  float slopeY = -2.0f * frame.quadric.y * frame.view.y * distance;
+  return frame.tangent * slopeX + frame.bitangent * slopeY;
+}
+
+#if defined(RELIEF_FRAGMENT_STAGE)
+in vec2 reliefQuadricVSOutput;
+
+ReliefFrame reliefFrameOf(ReliefFragment fragment)
+{
+  return reliefQuadricFrame(reliefTangentBasisOf(fragment), reliefQuadricVSOutput, fragment);
+}
+#endif
+#endif
