@@ -7,6 +7,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkReliefForwardMessages.h"
+#include "vtkReliefSearchMethod.h"
 
 #include "vtkReliefQuadricFrame.h"
 #include "vtkReliefTangentBasis.h"
@@ -91,9 +92,9 @@ void vtkOpenGLQuadricReliefMapper::MapFrameAttributes(bool relief)
     QuadricAttribute, relief ? vtkLocalQuadricFilter::QuadricArrayName() : nullptr);
 }
 
-bool vtkOpenGLQuadricReliefMapper::SupportsSearchMethod(int method)
+bool vtkOpenGLQuadricReliefMapper::SupportsSearchMethod(const vtkReliefSearchMethod& method)
 {
-  return method == LINEAR || method == LINEAR_BINARY || method == SECANT;
+  return method.FollowsCurvedRays;
 }
 
 const char* vtkOpenGLQuadricReliefMapper::GetUnsupportedSearchReason()

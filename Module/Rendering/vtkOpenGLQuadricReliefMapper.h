@@ -88,7 +88,7 @@ protected:
 
   bool UpdateReliefSurface() override;
   void MapFrameAttributes(bool relief) override;
-  bool SupportsSearchMethod(int method) override;
+  bool SupportsSearchMethod(const vtkReliefSearchMethod& method) override;
   const char* GetUnsupportedSearchReason() override;
   std::string GetFrameSource() override;
   std::string GetFrameDefines() override;

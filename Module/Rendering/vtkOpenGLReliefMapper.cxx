@@ -4,36 +4,30 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkConeStepMapFilter.h"
 #include "vtkDataArray.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
-#include "vtkMaximumMipmapFilter.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLReliefTextures.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkReliefForwardMessages.h"
+#include "vtkReliefSearchMethod.h"
 #include "vtkReliefSurfaceFilter.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
-#include "vtkSMPTools.h"
-#include "vtkSafetyRadiusFilter.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkUnsignedShortArray.h"
 #include "vtk_glew.h"
 
 #include "vtkReliefCommon.h"
@@ -63,69 +57,6 @@ constexpr int MinimumLinearSteps = 1;
 constexpr int MaximumLinearSteps = 512;
 constexpr int MaximumBinarySteps = 32;
 
-// Bytes of a w x h texture of `texelBytes` a texel with all its mipmap levels.
-vtkIdType MipmappedBytes(int width, int height, int texelBytes)
-{
-  vtkIdType bytes = 0;
-  for (int level = 0; width >> level > 0 || height >> level > 0; ++level)
-  {
-    bytes += static_cast<vtkIdType>(std::max(width >> level, 1)) * std::max(height >> level, 1);
-  }
-  return bytes * texelBytes;
-}
-
-// A repeating 2D texture of `values` (one or two components) in `internalFormat`:
-// mipmapped and trilinearly filtered, or read texel by texel (nearest filtering: the
-// acceleration images, one texel per cell, repeating as the height map does).
-bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
-  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat, bool mipmapped)
-{
-  const int components = values->GetNumberOfComponents();
-  texture->SetContext(window);
-  // vtkTextureObject keeps the formats and data type of an earlier upload, and one
-  // method's image would be read with another's layout
-  texture->ResetFormatAndType();
-  texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(components == 1 ? GL_RED : GL_RG);
-  texture->SetWrapS(vtkTextureObject::Repeat);
-  texture->SetWrapT(vtkTextureObject::Repeat);
-  texture->SetMinificationFilter(
-    mipmapped ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(mipmapped ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
-  if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
-        values->GetDataType(), values->GetVoidPointer(0)))
-  {
-    return false;
-  }
-  if (mipmapped)
-  {
-    // vtkTextureObject makes mipmaps for cube maps only
-    texture->Activate();
-    glGenerateMipmap(GL_TEXTURE_2D);
-    texture->Deactivate();
-  }
-  return true;
-}
-
-// The two bytes a cell of vtkConeStepMapFilter's map is uploaded as.
-vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
-{
-  vtkDataArray* cones = coneMap->GetPointData()->GetScalars();
-  const double maximumRatio = vtkConeStepMapFilter::GetMaximumRatio(
-    coneMap->GetDimensions()[0], coneMap->GetDimensions()[1]);
-  auto codes = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  codes->SetNumberOfComponents(2);
-  codes->SetNumberOfTuples(cones->GetNumberOfTuples());
-  vtkSMPTools::For(0, cones->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType cell = begin; cell < end; ++cell)
-    {
-      vtkConeStepMapFilter::EncodeCone(cones->GetComponent(cell, 0), cones->GetComponent(cell, 1),
-        maximumRatio, codes->GetPointer(2 * cell));
-    }
-  });
-  return codes;
-}
-
 // Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
 void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 {
@@ -142,8 +73,9 @@ void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
 {
   this->SetNumberOfInputPorts(3);
-  // The internal filters' errors and warnings are the mapper's.
+  // The internal filters' and helpers' errors and warnings are the mapper's.
   vtkReliefForwardMessages(this->ReliefTextureFilter, this);
+  vtkReliefForwardMessages(this->Textures, this);
 }
 
 vtkOpenGLReliefMapper::~vtkOpenGLReliefMapper() = default;
@@ -187,7 +119,7 @@ void vtkOpenGLReliefMapper::ComputeBounds()
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefMapper::SetSearchMethod(int method)
 {
-  if (!GetSearchMethodAsString(method))
+  if (!vtkReliefSearchMethod::Get(method))
   {
     vtkErrorMacro("Unknown search method " << method
                                            << "; use one of the SetSearchMethodTo...() methods.");
@@ -213,25 +145,8 @@ void vtkOpenGLReliefMapper::SetActiveSearchMethod(int method)
 
 const char* vtkOpenGLReliefMapper::GetSearchMethodAsString(int method)
 {
-  switch (method)
-  {
-    case LINEAR:
-      return "Linear";
-    case LINEAR_BINARY:
-      return "LinearBinary";
-    case SECANT:
-      return "Secant";
-    case EXACT_DDA:
-      return "ExactDDA";
-    case SAFETY_RADIUS:
-      return "SafetyRadius";
-    case CONE_STEP:
-      return "ConeStep";
-    case MAXIMUM_MIPMAP:
-      return "MaximumMipmap";
-    default:
-      return nullptr;
-  }
+  const vtkReliefSearchMethod* description = vtkReliefSearchMethod::Get(method);
+  return description ? description->Name : nullptr;
 }
 
 const char* vtkOpenGLReliefMapper::GetSearchMethodAsString()
@@ -239,25 +154,9 @@ const char* vtkOpenGLReliefMapper::GetSearchMethodAsString()
   return GetSearchMethodAsString(this->SearchMethod);
 }
 
-std::string vtkOpenGLReliefMapper::GetSearchDefines()
+const vtkReliefSearchMethod& vtkOpenGLReliefMapper::GetActiveSearch()
 {
-  switch (this->ActiveSearchMethod)
-  {
-    case LINEAR:
-      return "#define RELIEF_SEARCH reliefSearchLinear\n";
-    case SECANT:
-      return "#define RELIEF_SEARCH reliefSearchSecant\n";
-    case EXACT_DDA:
-      return "#define RELIEF_SEARCH reliefSearchExactDDA\n";
-    case SAFETY_RADIUS:
-      return "#define RELIEF_SEARCH reliefSearchSafetyRadius\n";
-    case CONE_STEP:
-      return "#define RELIEF_SEARCH reliefSearchConeStep\n";
-    case MAXIMUM_MIPMAP:
-      return "#define RELIEF_SEARCH reliefSearchMaximumMipmap\n";
-    default:
-      return "#define RELIEF_SEARCH reliefSearchLinearBinary\n";
-  }
+  return *vtkReliefSearchMethod::Get(this->ActiveSearchMethod);
 }
 
 void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
@@ -446,118 +345,42 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return false; // the filter has said why
   }
 
-  int dimensions[3];
-  relief->GetDimensions(dimensions);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  const int limit = vtkTextureObject::GetMaximumTextureSize(window);
-  if (dimensions[0] > limit || dimensions[1] > limit)
+  if (!this->Textures->UploadRelief(window, relief, this->ReliefTextureFilter->GetUseInputNormals()))
   {
-    if (this->OversizeReportTime <= relief->GetMTime())
-    {
-      this->OversizeReportTime.Modified(); // said once per height map
-      vtkErrorMacro("The height map is " << dimensions[0] << "x" << dimensions[1]
-                                         << " texels; this OpenGL takes textures of at most "
-                                         << limit << "x" << limit
-                                         << ". Resample it (vtkImageResize) to fit.");
-    }
     return false;
   }
-
-  if (this->DepthTexture->GetHandle() != 0 &&
-    this->ReliefTextureUploadTime > relief->GetMTime())
+  if (this->Textures->GetInputNormals() != this->InputNormals)
   {
-    return true;
-  }
-
-  // One 16-bit depth texture serves the searches and the shading, which rebuilds the
-  // normal from it: the filter's depths lie on that grid, so it holds them exactly, in a
-  // sixth of the bytes of float normals and depth. Only a normal map given with the
-  // heights needs a texture of its own: its (nx, ny), nz >= 0 following from them.
-  const vtkIdType texelCount = relief->GetNumberOfPoints();
-  vtkNew<vtkUnsignedShortArray> depths;
-  depths->SetNumberOfValues(texelCount);
-  for (vtkIdType texel = 0; texel < texelCount; ++texel)
-  {
-    depths->SetValue(texel, static_cast<unsigned short>(std::lround(
-      texels->GetComponent(texel, 3) * vtkReliefTextureFilter::DEPTH_LEVELS)));
-  }
-  bool uploaded = UploadTexture(this->DepthTexture, window, dimensions, depths, GL_R16, true);
-  this->DepthTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 2);
-  const bool inputNormals = this->ReliefTextureFilter->GetUseInputNormals();
-  this->NormalTextureBytes = 0;
-  if (inputNormals)
-  {
-    vtkNew<vtkFloatArray> normals;
-    normals->SetNumberOfComponents(2);
-    normals->SetNumberOfTuples(texelCount);
-    for (vtkIdType texel = 0; texel < texelCount; ++texel)
-    {
-      normals->SetTypedComponent(texel, 0, static_cast<float>(texels->GetComponent(texel, 0)));
-      normals->SetTypedComponent(texel, 1, static_cast<float>(texels->GetComponent(texel, 1)));
-    }
-    uploaded = uploaded &&
-      UploadTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM, true);
-    this->NormalTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 4);
-  }
-  else
-  {
-    this->NormalTexture->ReleaseGraphicsResources(window);
-  }
-  if (!uploaded)
-  {
-    vtkErrorMacro("Could not upload the " << dimensions[0] << "x" << dimensions[1]
-                                          << " relief texture to the GPU.");
-    return false;
-  }
-  if (inputNormals != this->InputNormals)
-  {
-    this->InputNormals = inputNormals;
+    this->InputNormals = this->Textures->GetInputNormals();
     this->ShaderOptionsTime.Modified();
   }
-  this->ReliefTextureUploadTime.Modified();
   return true;
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-bool NeedsAcceleration(int method)
-{
-  return method == vtkOpenGLReliefMapper::SAFETY_RADIUS ||
-    method == vtkOpenGLReliefMapper::CONE_STEP || method == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP;
-}
-}
-
 vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter(int method)
 {
-  switch (method)
-  {
-    case SAFETY_RADIUS:
-      return vtkSafetyRadiusFilter::New();
-    case CONE_STEP:
-      return vtkConeStepMapFilter::New();
-    case MAXIMUM_MIPMAP:
-      return vtkMaximumMipmapFilter::New();
-    default:
-      return nullptr;
-  }
+  const vtkReliefSearchMethod* description = vtkReliefSearchMethod::Get(method);
+  return description && description->NewAccelerationFilter ? description->NewAccelerationFilter()
+                                                           : nullptr;
 }
 
 void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
 {
-  if (!this->SupportsSearchMethod(this->SearchMethod))
+  const vtkReliefSearchMethod& method = *vtkReliefSearchMethod::Get(this->SearchMethod);
+  if (!this->SupportsSearchMethod(method))
   {
     if (!this->WarnedUnsupportedSearchMethod)
     {
       this->WarnedUnsupportedSearchMethod = true;
-      vtkWarningMacro(<< this->GetClassName() << " cannot search with "
-                      << this->GetSearchMethodAsString() << ": "
+      vtkWarningMacro(<< this->GetClassName() << " cannot search with " << method.Name << ": "
                       << this->GetUnsupportedSearchReason() << " Searching with LinearBinary.");
     }
     this->SetActiveSearchMethod(LINEAR_BINARY);
     return;
   }
-  if (!NeedsAcceleration(this->SearchMethod))
+  if (!method.NeedsAcceleration())
   {
     this->SetActiveSearchMethod(this->SearchMethod);
     return;
@@ -566,22 +389,9 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
   {
     this->GetInputAlgorithm(2, 0)->Update();
   }
-  vtkImageData* acceleration =
-    this->GetAcceleration() ? this->GetAcceleration() : this->ComputeAcceleration();
-  const bool current = acceleration && acceleration == this->UploadedAcceleration &&
-    this->AccelerationMethod == this->SearchMethod &&
-    this->AccelerationUploadTime > acceleration->GetMTime() &&
-    this->AccelerationUploadTime > this->ReliefTextureUploadTime;
-  if (!current)
-  {
-    // checked and uploaded once per change: any message is given once
-    this->UploadedAcceleration = acceleration;
-    this->AccelerationMethod = this->SearchMethod;
-    this->AccelerationUploadTime.Modified();
-    this->AccelerationUsable = acceleration && this->CheckAcceleration(acceleration) &&
-      this->UploadAcceleration(ren, acceleration);
-  }
-  if (this->AccelerationUsable)
+  if (this->Textures->UpdateAcceleration(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
+        method, this->ReliefTextureFilter->GetOutput(), this->GetAcceleration(),
+        this->SafetyRadiusTolerance))
   {
     this->SetActiveSearchMethod(this->SearchMethod);
     return;
@@ -589,83 +399,11 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
   if (!this->WarnedAccelerationFallback)
   {
     this->WarnedAccelerationFallback = true;
-    vtkWarningMacro("The " << this->GetSearchMethodAsString()
+    vtkWarningMacro("The " << method.Name
                            << " search has no usable acceleration image; searching with "
                               "LinearBinary instead.");
   }
   this->SetActiveSearchMethod(LINEAR_BINARY);
-}
-
-vtkImageData* vtkOpenGLReliefMapper::ComputeAcceleration()
-{
-  // only the image the chosen method reads, rebuilt only when its input or settings change
-  if (!this->AccelerationFilter || this->AccelerationFilterMethod != this->SearchMethod)
-  {
-    this->AccelerationFilter = vtk::TakeSmartPointer(NewAccelerationFilter(this->SearchMethod));
-    this->AccelerationFilterMethod = this->SearchMethod;
-    vtkReliefForwardMessages(this->AccelerationFilter, this);
-  }
-  if (auto* safety = vtkSafetyRadiusFilter::SafeDownCast(this->AccelerationFilter))
-  {
-    safety->SetErrorTolerance(this->SafetyRadiusTolerance);
-  }
-  this->AccelerationFilter->SetInputData(this->ReliefTextureFilter->GetOutput());
-  this->AccelerationFilter->Update();
-  return this->AccelerationFilter->GetOutput();
-}
-
-bool vtkOpenGLReliefMapper::CheckAcceleration(vtkImageData* acceleration)
-{
-  int relief[3];
-  this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
-  // what the method's own filter would make of this height map
-  auto producer = vtk::TakeSmartPointer(NewAccelerationFilter(this->SearchMethod));
-  int expected[2];
-  producer->GetOutputSize(relief[0], relief[1], expected);
-  const int components = producer->GetOutputComponents();
-  int dimensions[3];
-  acceleration->GetDimensions(dimensions);
-  vtkDataArray* values = acceleration->GetPointData()->GetScalars();
-  if (values && values->GetDataType() == VTK_FLOAT &&
-    values->GetNumberOfComponents() == components && dimensions[0] == expected[0] &&
-    dimensions[1] == expected[1] && dimensions[2] == 1)
-  {
-    return true;
-  }
-  vtkErrorMacro("The acceleration image is "
-    << dimensions[0] << "x" << dimensions[1] << "x" << dimensions[2] << " with "
-    << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
-    << (values ? values->GetDataTypeAsString() : "nothing") << "; the "
-    << this->GetSearchMethodAsString() << " search of this " << relief[0] << "x" << relief[1]
-    << " height map needs " << producer->GetClassName() << "'s output for it: " << expected[0] << "x"
-    << expected[1] << ", " << components << " component(s) of float. Connect that filter's "
-    << "output, or none to let the mapper build it.");
-  return false;
-}
-
-bool vtkOpenGLReliefMapper::UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration)
-{
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  this->AccelerationTextureBytes = 0;
-  // the cone map in two bytes a cell, rounded conservatively; the other maps as computed
-  vtkSmartPointer<vtkDataArray> values = acceleration->GetPointData()->GetScalars();
-  const bool cones = this->SearchMethod == CONE_STEP;
-  if (cones)
-  {
-    values = EncodeConeMap(acceleration);
-  }
-  const unsigned int internalFormat = cones ? GL_RG8
-    : values->GetNumberOfComponents() == 1  ? GL_R32F
-                                            : GL_RG32F;
-  if (!UploadTexture(this->AccelerationTexture, window, acceleration->GetDimensions(), values,
-        internalFormat, false))
-  {
-    vtkErrorMacro("Could not upload the " << this->GetSearchMethodAsString()
-                                          << " acceleration image to the GPU.");
-    return false;
-  }
-  this->AccelerationTextureBytes = values->GetNumberOfValues() * values->GetDataTypeSize();
-  return true;
 }
 
 void vtkOpenGLReliefMapper::MapReliefAttributes(bool relief)
@@ -791,15 +529,7 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   }
   if (this->DrawingRelief)
   {
-    this->DepthTexture->Activate();
-    if (this->InputNormals)
-    {
-      this->NormalTexture->Activate();
-    }
-    if (NeedsAcceleration(this->ActiveSearchMethod))
-    {
-      this->AccelerationTexture->Activate();
-    }
+    this->Textures->Activate(this->GetActiveSearch());
   }
 }
 
@@ -807,15 +537,7 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
 {
   if (this->DrawingRelief)
   {
-    if (NeedsAcceleration(this->ActiveSearchMethod))
-    {
-      this->AccelerationTexture->Deactivate();
-    }
-    if (this->InputNormals)
-    {
-      this->NormalTexture->Deactivate();
-    }
-    this->DepthTexture->Deactivate();
+    this->Textures->Deactivate(this->GetActiveSearch());
   }
   if (this->BackFacesLeftOut)
   {
@@ -947,7 +669,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::System::Dec",
     "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable\n");
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
-    "//VTK::Edges::Dec\n" + this->GetSearchDefines() +
+    "//VTK::Edges::Dec\n" + this->GetActiveSearch().GetShaderDefine() +
       (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations);
   vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
     std::string(vtkReliefFragmentImpl) + "\n  //VTK::UniformFlow::Impl");
@@ -1028,13 +750,9 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   {
     return;
   }
-  program->SetUniformi("reliefDepthTexture", this->DepthTexture->GetTextureUnit());
-  const float textureSize[2] = { static_cast<float>(this->DepthTexture->GetWidth()),
-    static_cast<float>(this->DepthTexture->GetHeight()) };
-  program->SetUniform2f("reliefTextureSize", textureSize);
+  this->Textures->SetShaderParameters(program, this->GetActiveSearch());
   if (this->InputNormals)
   {
-    program->SetUniformi("reliefNormalTexture", this->NormalTexture->GetTextureUnit());
     program->SetUniformf(
       "reliefNormalRatio", static_cast<float>(this->ReliefTextureFilter->GetDepthToTexelRatio()));
   }
@@ -1045,34 +763,6 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
   program->SetUniformi("reliefTwoSided", this->TwoSidedRelief ? 1 : 0);
-  if (NeedsAcceleration(this->ActiveSearchMethod))
-  {
-    program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
-  }
-  if (this->ActiveSearchMethod == CONE_STEP)
-  {
-    const float coneRange[2] = { static_cast<float>(vtkConeStepMapFilter::GetMaximumRatio(
-                                   this->AccelerationTexture->GetWidth(),
-                                   this->AccelerationTexture->GetHeight())),
-      static_cast<float>(vtkConeStepMapFilter::RATIO_OCTAVES) };
-    program->SetUniform2f("reliefConeRange", coneRange);
-  }
-  if (this->ActiveSearchMethod == MAXIMUM_MIPMAP)
-  {
-    int relief[3];
-    this->ReliefTextureFilter->GetOutput()->GetDimensions(relief);
-    float rows[32] = {};
-    int origin[2];
-    int size[2];
-    int top = 0;
-    while (top + 1 < 32 &&
-      vtkMaximumMipmapFilter::GetLevelPlacement(relief[0], relief[1], top + 1, origin, size))
-    {
-      rows[++top] = static_cast<float>(origin[1]);
-    }
-    program->SetUniformi("reliefPyramidTop", top);
-    program->SetUniform1fv("reliefPyramidRows", 32, rows);
-  }
 }
 
 void vtkOpenGLReliefMapper::SetCameraShaderParameters(
@@ -1126,20 +816,13 @@ void vtkOpenGLReliefMapper::SetCameraShaderParameters(
 
 vtkIdType vtkOpenGLReliefMapper::GetTextureBytes()
 {
-  return this->DepthTextureBytes + this->NormalTextureBytes +
-    (NeedsAcceleration(this->ActiveSearchMethod) ? this->AccelerationTextureBytes : 0);
+  return this->Textures->GetTextureBytes(this->GetActiveSearch());
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->DepthTexture->ReleaseGraphicsResources(window);
-  this->NormalTexture->ReleaseGraphicsResources(window);
-  this->AccelerationTexture->ReleaseGraphicsResources(window);
-  this->DepthTextureBytes = 0;
-  this->NormalTextureBytes = 0;
-  this->AccelerationTextureBytes = 0;
-  this->UploadedAcceleration = nullptr;
+  this->Textures->ReleaseGraphicsResources(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -1162,6 +845,8 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "HeightMap: " << this->GetHeightMap() << "\n";
   os << indent << "TextureBytes: " << this->GetTextureBytes() << "\n";
+  os << indent << "Textures:\n";
+  this->Textures->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ReliefTextureFilter:\n";
   this->ReliefTextureFilter->PrintSelf(os, indent.GetNextIndent());
   if (this->TangentFrame)

@@ -36,15 +36,15 @@
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkReliefRenderingModule.h"
-#include "vtkSmartPointer.h"  // for AccelerationFilter
+#include "vtkSmartPointer.h"  // For TangentFrame
 #include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
 class vtkImageData;
-class vtkMatrix3x3;
+class vtkOpenGLReliefTextures;
+class vtkReliefAccelerationFilter;
+class vtkReliefSearchMethod;
 class vtkReliefTangentFrameFilter;
 class vtkReliefTextureFilter;
-class vtkReliefAccelerationFilter;
-class vtkTextureObject;
 
 class VTKRELIEFRENDERING_EXPORT vtkOpenGLReliefMapper : public vtkOpenGLPolyDataMapper
 {
@@ -266,11 +266,11 @@ protected:
   bool UpdateReliefTexture(vtkRenderer* ren);
   /// The image connected to input port `port` (1 or 2), or null.
   vtkImageData* GetImageOnPort(int port);
+  /// Brings the search method's acceleration image up to date, or falls back.
   void UpdateAcceleration(vtkRenderer* ren);
-  vtkImageData* ComputeAcceleration();
-  bool CheckAcceleration(vtkImageData* acceleration);
-  bool UploadAcceleration(vtkRenderer* ren, vtkImageData* acceleration);
   void SetActiveSearchMethod(int method);
+  /// The description of ActiveSearchMethod.
+  const vtkReliefSearchMethod& GetActiveSearch();
   /// Binds the texture coordinates and the frame's arrays to the shader inputs (none
   /// when relief is not drawn).
   void MapReliefAttributes(bool relief);
@@ -288,7 +288,7 @@ protected:
   /// Binds one shader input to a point array of CurrentInput (unbinds it for nullptr).
   void MapReliefAttribute(const char* shaderInput, const char* arrayName);
   /// Whether this mapper's frame can search with `method`; if not, LinearBinary is used.
-  virtual bool SupportsSearchMethod(int) { return true; }
+  virtual bool SupportsSearchMethod(const vtkReliefSearchMethod&) { return true; }
   /// Why SupportsSearchMethod() refused, for the warning.
   virtual const char* GetUnsupportedSearchReason() { return ""; }
   /// The frame's GLSL (vtkReliefCommon.glsl's frame interface): the tangent frame here.
@@ -304,7 +304,6 @@ protected:
   void InsertReliefGeometryShader(vtkShader* geometryShader);
   void ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity);
   void ReplaceReliefTextureReads(vtkShader* fragmentShader);
-  virtual std::string GetSearchDefines();
 
   int SearchMethod = LINEAR_BINARY;
   int LinearSteps = 10;
@@ -318,24 +317,11 @@ protected:
 
   vtkSmartPointer<vtkReliefTangentFrameFilter> TangentFrame; // GetTangentFrameFilter()
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
-  vtkNew<vtkTextureObject> DepthTexture;  // 16-bit depth: searched, and shaded from
-  vtkNew<vtkTextureObject> NormalTexture; // (nx, ny) of an input normal map, if one is used
-  vtkNew<vtkTextureObject> AccelerationTexture; // what the search method needs besides
-  bool InputNormals = false; // NormalTexture holds the normals the shading reads
-  vtkIdType DepthTextureBytes = 0;
-  vtkIdType NormalTextureBytes = 0;
-  vtkIdType AccelerationTextureBytes = 0;
-  vtkSmartPointer<vtkReliefAccelerationFilter> AccelerationFilter; // builds it, for SearchMethod
-  int AccelerationFilterMethod = -1; // the method AccelerationFilter was made for
-  vtkTimeStamp AccelerationUploadTime;
-  vtkImageData* UploadedAcceleration = nullptr; // compared by address only
+  vtkNew<vtkOpenGLReliefTextures> Textures; // on the GPU: relief and acceleration
+  bool InputNormals = false; // the shader reads an input normal map (the textures' say)
   int ActiveSearchMethod = LINEAR_BINARY; // SearchMethod, or its fallback
-  int AccelerationMethod = -1; // the method AccelerationTexture was built for
-  bool AccelerationUsable = false;
   bool WarnedAccelerationFallback = false;
   bool WarnedUnsupportedSearchMethod = false;
-  vtkTimeStamp ReliefTextureUploadTime;
-  vtkTimeStamp OversizeReportTime; // when a too large height map was last reported
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
   bool DrawingRelief = false;

@@ -8,8 +8,8 @@
 // acceleration image, search selection, depth correction) against code that is proven
 // exact by the unit tests.
 //
-// Every method of ReliefScene::SearchMethods() is compared; CpuSearches and PrepareMaps
-// know the mirror's search for each and the map it reads. No baseline image:
+// Every method of vtkReliefSearchMethod is compared: the mirror's search of the method's
+// GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it. No baseline image:
 // the depth buffer is checked against the mirror, not against a picture.
 #include "ReliefMirrorMaps.h"
 #include "ReliefScene.h"
@@ -24,6 +24,7 @@
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkReliefSearchMethod.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
@@ -36,7 +37,6 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -107,35 +107,6 @@ constexpr int MinimumCompared = 300;
 // only: compare where the GPU reads level 0 too (the texture magnified), with a margin
 // for its per-quad derivatives. Half the rivets' view qualifies, all the thin features'.
 constexpr double MaximumLod = -0.1;
-
-// The search the shader compiles for a method, on the CPU, with the mapper's step counts.
-using Search = std::function<mirror::ReliefHit(mirror::ReliefRay, int, int)>;
-const std::map<std::string, Search>& CpuSearches()
-{
-  static const std::map<std::string, Search> searches = {
-    { "Linear",
-      [](mirror::ReliefRay ray, int linear, int) {
-        return mirror::reliefSearchLinear(ray, linear, 0);
-      } },
-    { "LinearBinary",
-      [](mirror::ReliefRay ray, int linear, int binary) {
-        return mirror::reliefSearchLinearBinary(ray, linear, binary);
-      } },
-    { "Secant",
-      [](mirror::ReliefRay ray, int linear, int binary) {
-        return mirror::reliefSearchSecant(ray, linear, binary);
-      } },
-    { "ExactDDA",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchExactDDA(ray, 0, 0); } },
-    { "MaximumMipmap",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchMaximumMipmap(ray, 0, 0); } },
-    { "SafetyRadius",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchSafetyRadius(ray, 0, 0); } },
-    { "ConeStep",
-      [](mirror::ReliefRay ray, int, int) { return mirror::reliefSearchConeStep(ray, 0, 0); } },
-  };
-  return searches;
-}
 
 // What the mirror reads, made from the relief texture the mapper uploaded by the filters
 // the mapper runs (vtkOpenGLReliefMapper::ComputeAcceleration: a setting it gives its
@@ -320,7 +291,8 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
   const View& view, const mirror::ReliefTangentVertex& vertex, const Maps& maps,
   const std::vector<float>& zbuffer)
 {
-  const Search& search = CpuSearches().at(method);
+  const mirror::Search search =
+    mirror::FindSearch(vtkReliefSearchMethod::Find(method)->Function);
   const glm::vec2 size(float(maps.Field.Width), float(maps.Field.Height));
   const float depthScale = static_cast<float>(mapper->GetDepthScale()); // a float uniform
   Comparison result;
@@ -422,7 +394,7 @@ int TestReliefGpuMatchesCpu(int, char*[])
     for (int id : ReliefScene::SearchMethods())
     {
       const std::string method = vtkOpenGLReliefMapper::GetSearchMethodAsString(id);
-      if (CpuSearches().count(method) == 0)
+      if (!mirror::FindSearch(vtkReliefSearchMethod::Get(id)->Function))
       {
         std::cerr << "ERROR: " << method << " has no search in the CPU mirror\n";
         ++failures;

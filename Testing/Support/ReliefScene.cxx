@@ -15,6 +15,7 @@
 #include "vtkOpenGLDerivativeReliefMapper.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
+#include "vtkReliefSearchMethod.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkPLYReader.h"
@@ -41,7 +42,6 @@
 
 #include <vtksys/SystemTools.hxx>
 
-#include <cctype>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -376,26 +376,8 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowBricks(vtkRenderWindow* window, int w
 
 int SearchMethodNamed(const std::string& name)
 {
-  auto squeeze = [](const std::string& text) {
-    std::string result;
-    for (char c : text)
-    {
-      if (c != '-')
-      {
-        result += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      }
-    }
-    return result;
-  };
-  for (int method = 0; method < 16; ++method)
-  {
-    const char* known = vtkOpenGLReliefMapper::GetSearchMethodAsString(method);
-    if (known && squeeze(known) == squeeze(name))
-    {
-      return method;
-    }
-  }
-  return -1;
+  const vtkReliefSearchMethod* method = vtkReliefSearchMethod::Find(name);
+  return method ? method->Id : -1;
 }
 
 vtkSmartPointer<vtkImageData> HeightImage(
@@ -443,10 +425,14 @@ vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
 
 const std::vector<int>& SearchMethods()
 {
-  static const std::vector<int> methods = { vtkOpenGLReliefMapper::LINEAR,
-    vtkOpenGLReliefMapper::LINEAR_BINARY, vtkOpenGLReliefMapper::SECANT,
-    vtkOpenGLReliefMapper::EXACT_DDA, vtkOpenGLReliefMapper::SAFETY_RADIUS,
-    vtkOpenGLReliefMapper::CONE_STEP, vtkOpenGLReliefMapper::MAXIMUM_MIPMAP };
+  static const std::vector<int> methods = [] {
+    std::vector<int> ids;
+    for (int id = 0; id < vtkReliefSearchMethod::GetNumberOfMethods(); ++id)
+    {
+      ids.push_back(id);
+    }
+    return ids;
+  }();
   return methods;
 }
 

@@ -99,8 +99,8 @@ vtkSmartPointer<vtkImageData> ThinFeatures();
 /// Thin features on a square seen `angle` degrees from its normal, searched by `method`.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
   vtkRenderWindow* window, int width, int height, double angle, int method);
-/// Every search method, from the cheapest to the exact ones: Linear, LinearBinary,
-/// Secant, ExactDDA, SafetyRadius, ConeStep, MaximumMipmap.
+/// Every search method (vtkReliefSearchMethod), in order of id: from the cheapest to the
+/// exact ones.
 const std::vector<int>& SearchMethods();
 /// Thin features under every search method (SearchMethods(), left to right), at 45
 /// degrees (top) and 80 degrees (bottom).

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace ReliefCpuMirror
@@ -175,6 +177,28 @@ namespace
 #include "ReliefCpuMirrorSources.h"
 #undef RELIEF_VERTEX_NORMALS
 }
+}
+
+/// A search as the shader calls it (RELIEF_SEARCH), on the flat frame's rays.
+using Search = ReliefHit (*)(ReliefRay ray, int linearSteps, int refinementSteps);
+
+/// The mirror's search of the GLSL function `function` (vtkReliefSearchMethod's
+/// Function), or null when the mirror lacks it.
+inline Search FindSearch(const std::string& function)
+{
+#define RELIEF_MIRROR_SEARCH(name) { #name, &name }
+  static const std::map<std::string, Search> searches = {
+    RELIEF_MIRROR_SEARCH(reliefSearchLinear),
+    RELIEF_MIRROR_SEARCH(reliefSearchLinearBinary),
+    RELIEF_MIRROR_SEARCH(reliefSearchSecant),
+    RELIEF_MIRROR_SEARCH(reliefSearchExactDDA),
+    RELIEF_MIRROR_SEARCH(reliefSearchSafetyRadius),
+    RELIEF_MIRROR_SEARCH(reliefSearchConeStep),
+    RELIEF_MIRROR_SEARCH(reliefSearchMaximumMipmap),
+  };
+#undef RELIEF_MIRROR_SEARCH
+  const auto found = searches.find(function);
+  return found == searches.end() ? nullptr : found->second;
 }
 #undef RELIEF_DEPTH
 #undef RELIEF_DEPTH_SIZE

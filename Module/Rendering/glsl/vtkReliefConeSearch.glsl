@@ -30,6 +30,14 @@ vec2 reliefConeDecode(vec2 stored, vec2 range)
   return vec2(topCode * (1.0f / 255.0f), ratio);
 }
 
+#ifndef RELIEF_CONE_STEP
+// The GPU's cone map, two bytes a cell, read as the radii are (vtkReliefSafetySearch.glsl).
+uniform vec2 reliefConeRange; // vtkConeStepMapFilter's maximum ratio and RATIO_OCTAVES
+#define RELIEF_CONE_STEP(cell) reliefConeDecode( \
+  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).rg, \
+  reliefConeRange)
+#endif
+
 ReliefHit reliefSearchConeStep(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);

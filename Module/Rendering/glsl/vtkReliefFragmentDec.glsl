@@ -5,7 +5,6 @@ uniform sampler2D reliefDepthTexture; // vtkReliefTextureFilter's depth, 16-bit
 uniform sampler2D reliefNormalTexture; // (nx, ny) of the normal map given with the heights
 #endif
 uniform sampler2D reliefAccelerationTexture; // what the search method reads besides
-uniform int reliefPyramidTop;
 uniform vec2 reliefTextureSize;    // texels per tile
 uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio (input normals only)
 uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief
@@ -60,23 +59,6 @@ vec4 reliefCellDepths(vec2 cell)
     texelFetch(reliefDepthTexture, high, 0).r);
 }
 #endif
-// The pyramid is vtkMaximumMipmapFilter's atlas, one level of texture: a level's lod
-// in texelFetch may be taken for a whole group of fragments by some drivers (llvmpipe).
-uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
-#define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefAccelerationTexture, \
-  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0).r
-#define RELIEF_PYRAMID_TOP reliefPyramidTop
-// vtkSafetyRadiusFilter's radius and vtkConeStepMapFilter's (top, ratio) of a cell, one
-// texel per cell: read at the texel's centre with nearest filtering, so that the sampler
-// repeats the index (about a tenth of ConeStep's frame on llvmpipe against texelFetch of
-// mod(cell, size)); cells as far as 10^5 texels away still land within 0.01 texel
-#define RELIEF_SAFETY_RADIUS(cell) \
-  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).r
-uniform vec2 reliefConeRange; // vtkConeStepMapFilter's maximum ratio and RATIO_OCTAVES
-#define RELIEF_CONE_STEP(cell) reliefConeDecode( \
-  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).rg, \
-  reliefConeRange)
-
 // The depth gradient (change of depth per unit of u and v) at a hit, at the level the
 // search read there: central differences one texel of that level apart, which at level 0
 // are exactly the bilinear blend of vtkReliefTextureFilter's per-texel normals, so the

@@ -7,6 +7,17 @@
 // MaximumMipmap also needs RELIEF_PYRAMID_DEPTH(node, level): the least depth (highest
 // point) of a pyramid node, and RELIEF_PYRAMID_TOP, its top level.
 
+#ifndef RELIEF_PYRAMID_DEPTH
+// The GPU's pyramid: vtkMaximumMipmapFilter's atlas, one level of texture (a level's lod
+// in texelFetch may be taken for a whole group of fragments by some drivers: llvmpipe),
+// described by vtkReliefSearchMethod's uniforms.
+uniform int reliefPyramidTop;
+uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
+#define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefAccelerationTexture, \
+  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0).r
+#define RELIEF_PYRAMID_TOP reliefPyramidTop
+#endif
+
 // Upper bound on loop iterations, so a shader always terminates.
 #define RELIEF_MAX_ITERATIONS 65536
 

@@ -1,0 +1,67 @@
+// vtkReliefSearchMethod, the one description of each search method, against what reads
+// it: ids in order and names that the mapper's enum and the mirror agree on, a GLSL
+// function of the shared signature in the shader sources for each, the mirror's search
+// of that function, and an acceleration filter exactly where the method reads an image.
+#include "ReliefCpuMirror.h"
+#include "vtkReliefAccelerationFilter.h"
+#include "vtkReliefSearchMethod.h"
+#include "vtkSmartPointer.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace
+{
+// Every shader source of the module, concatenated.
+std::string ShaderSources()
+{
+  std::string sources;
+  for (const auto& entry : std::filesystem::directory_iterator(RELIEF_GLSL_DIR))
+  {
+    if (entry.path().extension() == ".glsl")
+    {
+      std::ifstream file(entry.path());
+      std::ostringstream text;
+      text << file.rdbuf();
+      sources += text.str();
+    }
+  }
+  return sources;
+}
+
+TEST(ReliefSearchMethodTable, EveryMethodIsDescribedOnceAndFoundWhereItIsRead)
+{
+  const std::string sources = ShaderSources();
+  ASSERT_FALSE(sources.empty());
+  const int count = vtkReliefSearchMethod::GetNumberOfMethods();
+  EXPECT_GE(count, 7);
+  std::set<std::string> names;
+  for (int id = 0; id < count; ++id)
+  {
+    const vtkReliefSearchMethod* method = vtkReliefSearchMethod::Get(id);
+    ASSERT_NE(method, nullptr);
+    EXPECT_EQ(method->Id, id) << "entries in order of id";
+    EXPECT_TRUE(names.insert(method->Name).second) << method->Name << " twice";
+    EXPECT_EQ(vtkReliefSearchMethod::Find(method->Name), method);
+    const std::string signature = std::string("ReliefHit ") + method->Function +
+      "(ReliefRay ray, int linearSteps, int refinementSteps)";
+    EXPECT_NE(sources.find(signature), std::string::npos)
+      << method->Name << ": no " << signature << " in the shader sources";
+    EXPECT_NE(ReliefCpuMirror::FindSearch(method->Function), nullptr)
+      << method->Name << ": the CPU mirror has no " << method->Function;
+    EXPECT_EQ(method->GetShaderDefine(), std::string("#define RELIEF_SEARCH ") + method->Function + "\n");
+    auto filter = vtk::TakeSmartPointer(
+      method->NewAccelerationFilter ? method->NewAccelerationFilter() : nullptr);
+    EXPECT_EQ(filter != nullptr, method->NeedsAcceleration()) << method->Name;
+  }
+  EXPECT_EQ(vtkReliefSearchMethod::Get(-1), nullptr);
+  EXPECT_EQ(vtkReliefSearchMethod::Get(count), nullptr);
+  EXPECT_EQ(vtkReliefSearchMethod::Find("cone-step"), vtkReliefSearchMethod::Find("ConeStep"));
+  EXPECT_EQ(vtkReliefSearchMethod::Find("Bisection"), nullptr);
+}
+}
