@@ -23,6 +23,7 @@
 #include "vtkProperty.h"
 #include "vtkReliefForwardMessages.h"
 #include "vtkReliefSearchMethod.h"
+#include "vtkReliefShaderRewrites.h"
 #include "vtkReliefSurfaceFilter.h"
 #include "vtkReliefTangentFrameFilter.h"
 #include "vtkReliefTextureFilter.h"
@@ -46,7 +47,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 #include <vector>
 
 vtkStandardNewMacro(vtkOpenGLReliefMapper);
@@ -611,48 +611,68 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   const int lightComplexity = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity;
 
   // Insertions keep VTK's tags, so VTK's own code still lands before ours.
+  this->MissingShaderTags.clear();
   this->InsertReliefVertexShader(shaders[vtkShader::Vertex]);
   this->InsertReliefFragmentShader(shaders[vtkShader::Fragment], lightComplexity);
   this->InsertReliefGeometryShader(shaders[vtkShader::Geometry]);
 
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 
-  // VTK declares the model-to-view matrix only for lit surfaces.
   std::string vertexSource = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vertexSource, "//VTK::Relief::CameraDec",
-    vertexSource.find("uniform mat4 MCVCMatrix;") == std::string::npos
-      ? "uniform mat4 MCVCMatrix;"
-      : "");
+  vtkReliefShaderRewrites::DeclareModelToView(vertexSource, "//VTK::Relief::CameraDec");
   shaders[vtkShader::Vertex]->SetSource(vertexSource);
-
-  this->ReplaceReliefLightVisibility(shaders[vtkShader::Fragment], lightComplexity);
-  this->ReplaceReliefTextureReads(shaders[vtkShader::Fragment]);
-}
-
-void vtkOpenGLReliefMapper::ReplaceReliefTextureReads(vtkShader* fragmentShader)
-{
+  std::string fragmentSource = shaders[vtkShader::Fragment]->GetSource();
+  this->WeightLightsByShadow(fragmentSource, lightComplexity, actor);
   // VTK reads the actor's textures with implicit derivatives, which jump wherever the
   // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
   // them at the level of the entry coordinates, as the relief itself is read.
-  const std::regex implicitRead(R"(texture\((\w+), tcoordVCVSOutput\))");
-  fragmentShader->SetSource(std::regex_replace(
-    fragmentShader->GetSource(), implicitRead, "reliefTextureAtRay($1, tcoordVCVSOutput)"));
+  vtkReliefShaderRewrites::ReadTexturesThrough(fragmentSource, "reliefTextureAtRay");
+  shaders[vtkShader::Fragment]->SetSource(fragmentSource);
+  this->ReportMissingShaderTags();
+}
+
+void vtkOpenGLReliefMapper::Insert(std::string& source, const char* tag, const std::string& code,
+  bool (*insertion)(std::string&, const char*, const std::string&))
+{
+  if (!insertion(source, tag, code))
+  {
+    this->MissingShaderTags.push_back(tag);
+  }
+}
+
+void vtkOpenGLReliefMapper::ReportMissingShaderTags()
+{
+  if (this->MissingShaderTags.empty() || this->WarnedMissingShaderTags)
+  {
+    return;
+  }
+  this->WarnedMissingShaderTags = true;
+  std::string tags;
+  for (const char* tag : this->MissingShaderTags)
+  {
+    tags += std::string(tags.empty() ? "" : ", ") + tag;
+  }
+  vtkWarningMacro("This VTK's shader templates lack " << tags
+                  << ", where the relief's code goes (vtkReliefShaderRewrites follows VTK 9.1 "
+                     "and 9.2): the relief may be drawn wrong or not at all. Build vtkRelief "
+                     "against one of those, or update vtkReliefShaderRewrites.");
 }
 
 void vtkOpenGLReliefMapper::InsertReliefVertexShader(vtkShader* vertexShader)
 {
+  using Rewrites = vtkReliefShaderRewrites;
   std::string vertexSource = vertexShader->GetSource();
-  vtkShaderProgram::Substitute(vertexSource, "//VTK::PositionVC::Dec",
-    "//VTK::PositionVC::Dec\n" + std::string(vtkReliefVertexDec) +
-      this->GetFrameShaderCode("RELIEF_VERTEX_STAGE"));
-  vtkShaderProgram::Substitute(vertexSource, "//VTK::CustomEnd::Impl",
-    std::string(vtkReliefVertexImpl) + "\n  //VTK::CustomEnd::Impl");
+  this->Insert(vertexSource, Rewrites::VertexDeclarations,
+    std::string(vtkReliefVertexDec) + this->GetFrameShaderCode("RELIEF_VERTEX_STAGE"),
+    &Rewrites::InsertAfter);
+  this->Insert(vertexSource, Rewrites::VertexEnd, vtkReliefVertexImpl, &Rewrites::InsertBefore);
   vertexShader->SetSource(vertexSource);
 }
 
 void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShader* fragmentShader, int lightComplexity)
 {
+  using Rewrites = vtkReliefShaderRewrites;
   std::string declarations = vtkReliefFragmentDec;
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
@@ -660,35 +680,38 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
       vtkReliefConeSearch);
   vtkShaderProgram::Substitute(
     declarations, "//VTK::Relief::Frame", this->GetFrameShaderCode("RELIEF_FRAGMENT_STAGE"));
-  // VTK's texture and normal-map code reads tcoordVCVSOutput: make it read at the hit,
-  // unless that slot carries the colour coordinates of scalars mapped through a texture.
+  // VTK's texture and normal-map code reads its texture coordinates: make it read at the
+  // hit, unless that slot carries the colour coordinates of scalars mapped through a texture.
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::TCoordAtHit",
-    this->ColorTextureMap ? "" : "#define tcoordVCVSOutput reliefHitTCoord");
+    this->ColorTextureMap
+      ? ""
+      : std::string("#define ") + Rewrites::GetTextureCoordinates() + " reliefHitTCoord");
   std::string fragmentSource = fragmentShader->GetSource();
   // exact cell tests read a cell's four corners in one gather where GL offers it
-  vtkShaderProgram::Substitute(fragmentSource, "//VTK::System::Dec",
-    "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable\n");
-  vtkShaderProgram::Substitute(fragmentSource, "//VTK::Edges::Dec",
-    "//VTK::Edges::Dec\n" + this->GetActiveSearch().GetShaderDefine() +
-      (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations);
-  vtkShaderProgram::Substitute(fragmentSource, "//VTK::UniformFlow::Impl",
-    std::string(vtkReliefFragmentImpl) + "\n  //VTK::UniformFlow::Impl");
-  vtkShaderProgram::Substitute(
-    fragmentSource, "//VTK::Depth::Impl", "gl_FragDepth = reliefFragDepth;\n");
+  this->Insert(fragmentSource, Rewrites::FragmentSystem,
+    "#extension GL_ARB_texture_gather : enable\n", &Rewrites::InsertAfter);
+  this->Insert(fragmentSource, Rewrites::FragmentDeclarations,
+    this->GetActiveSearch().GetShaderDefine() +
+      (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations,
+    &Rewrites::InsertAfter);
+  this->Insert(
+    fragmentSource, Rewrites::FragmentStart, vtkReliefFragmentImpl, &Rewrites::InsertBefore);
+  this->Insert(fragmentSource, Rewrites::FragmentDepth, "gl_FragDepth = reliefFragDepth;\n",
+    &Rewrites::Replace);
   if (lightComplexity > 0)
   {
-    vtkShaderProgram::Substitute(fragmentSource, "//VTK::Normal::Impl",
-      "//VTK::Normal::Impl\n"
+    this->Insert(fragmentSource, Rewrites::FragmentNormal,
       "  normalVCVSOutput = reliefLitNormalVC;\n"
-      "  vertexVC = vec4(reliefHitVC, 1.0);\n");
+      "  vertexVC = vec4(reliefHitVC, 1.0);\n",
+      &Rewrites::InsertAfter);
   }
-  vtkShaderProgram::Substitute(fragmentSource, "//VTK::DepthPeeling::Impl",
+  this->Insert(fragmentSource, Rewrites::FragmentOutput,
     "if (reliefDisplayMode == 1)\n"
     "  {\n"
     "    float reliefSamples = min(float(reliefViewHit.samples), 255.0);\n"
     "    gl_FragData[0] = vec4(reliefSamples / 255.0, 0.0, 0.0, 1.0);\n"
-    "  }\n"
-    "  //VTK::DepthPeeling::Impl");
+    "  }",
+    &Rewrites::InsertBefore);
   fragmentShader->SetSource(fragmentSource);
 }
 
@@ -696,48 +719,43 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
 {
   // With a geometry shader (edges, wide lines) VTK renames the fragment inputs from
   // VSOutput to GSOutput: pass the frame through it.
+  using Rewrites = vtkReliefShaderRewrites;
   std::string geometrySource = geometryShader->GetSource();
   if (!geometrySource.empty())
   {
-    vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Dec",
-      "//VTK::Normal::Dec\n" + std::string(vtkReliefGeometryDec) +
-        this->GetFrameShaderCode("RELIEF_GEOMETRY_STAGE"));
-    vtkShaderProgram::Substitute(geometrySource, "//VTK::Normal::Impl",
-      std::string("//VTK::Normal::Impl\n") + vtkReliefGeometryImpl);
+    this->Insert(geometrySource, Rewrites::GeometryDeclarations,
+      std::string(vtkReliefGeometryDec) + this->GetFrameShaderCode("RELIEF_GEOMETRY_STAGE"),
+      &Rewrites::InsertAfter);
+    this->Insert(
+      geometrySource, Rewrites::GeometryVertex, vtkReliefGeometryImpl, &Rewrites::InsertAfter);
     geometryShader->SetSource(geometrySource);
   }
 }
 
-void vtkOpenGLReliefMapper::ReplaceReliefLightVisibility(
-  vtkShader* fragmentShader, int lightComplexity)
+void vtkOpenGLReliefMapper::WeightLightsByShadow(
+  std::string& fragmentSource, int lightComplexity, vtkActor* actor)
 {
   if (lightComplexity < 2)
   {
     return; // unlit, or a headlight: it lights what the camera sees, no self-shadow
   }
-  // Each light's diffuse term of VTK's (non-PBR) lighting code is weighted by the
-  // visibility of that light from the hit; the specular term follows through sign(df).
-  std::string source = fragmentShader->GetSource();
-  const std::regex directional(
-    R"(df = max\(0\.0, dot\(normalVCVSOutput, -lightDirectionVC(\d+)\)\);)");
-  std::string shadowed = std::regex_replace(source, directional,
-    "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC$1)) * "
-    "reliefShadow(-lightDirectionVC$1);");
-  vtkShaderProgram::Substitute(shadowed,
-    "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC));",
-    "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC)) * "
-    "reliefShadow(-vertLightDirectionVC);");
-  if (shadowed == source)
+  if (vtkReliefShaderRewrites::WeightLightsBy(fragmentSource, "reliefShadow") > 0 ||
+    !this->SelfShadowing || this->WarnedNoSelfShadowing)
   {
-    if (this->SelfShadowing && !this->WarnedNoSelfShadowing)
-    {
-      this->WarnedNoSelfShadowing = true;
-      vtkWarningMacro("Self-shadowing is not available with this lighting model "
-                      "(physically based interpolation); the relief is lit without it.");
-    }
     return;
   }
-  fragmentShader->SetSource(shadowed);
+  this->WarnedNoSelfShadowing = true;
+  if (actor->GetProperty()->GetInterpolation() == VTK_PBR)
+  {
+    vtkWarningMacro("Self-shadowing is not available with this lighting model "
+                    "(physically based interpolation); the relief is lit without it.");
+  }
+  else
+  {
+    vtkWarningMacro("This VTK's lighting code does not hold the diffuse terms "
+                    "vtkReliefShaderRewrites::WeightLightsBy follows (VTK 9.1 and 9.2): the "
+                    "relief is lit without self-shadowing.");
+  }
 }
 
 //------------------------------------------------------------------------------

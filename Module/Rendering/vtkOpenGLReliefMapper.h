@@ -39,6 +39,8 @@
 #include "vtkSmartPointer.h"  // For TangentFrame
 #include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
+#include <vector> // For MissingShaderTags
+
 class vtkImageData;
 class vtkOpenGLReliefTextures;
 class vtkReliefAccelerationFilter;
@@ -299,11 +301,17 @@ protected:
   std::string GetFrameShaderCode(const char* stage);
   /// The tangent frame filter, made on first use.
   vtkReliefTangentFrameFilter* GetTangentFrameFilter();
+  ///@{
+  /// The relief's code at VTK's tags (vtkReliefShaderRewrites), each missing tag noted.
   void InsertReliefVertexShader(vtkShader* vertexShader);
   void InsertReliefFragmentShader(vtkShader* fragmentShader, int lightComplexity);
   void InsertReliefGeometryShader(vtkShader* geometryShader);
-  void ReplaceReliefLightVisibility(vtkShader* fragmentShader, int lightComplexity);
-  void ReplaceReliefTextureReads(vtkShader* fragmentShader);
+  void Insert(std::string& source, const char* tag, const std::string& code,
+    bool (*insertion)(std::string&, const char*, const std::string&));
+  void ReportMissingShaderTags();
+  ///@}
+  /// Each light's diffuse term weighted by the relief's self-shadow, or one warning why not.
+  void WeightLightsByShadow(std::string& fragmentSource, int lightComplexity, vtkActor* actor);
 
   int SearchMethod = LINEAR_BINARY;
   int LinearSteps = 10;
@@ -338,6 +346,8 @@ protected:
   bool WarnedDepthScale = false;
   double DrawnDepthScale = 0.0; // what this render's shaders use: UsableDepthScale()
   bool WarnedNoSelfShadowing = false;
+  std::vector<const char*> MissingShaderTags; // by the shader being built
+  bool WarnedMissingShaderTags = false;
 
 private:
   vtkOpenGLReliefMapper(const vtkOpenGLReliefMapper&) = delete;
