@@ -126,7 +126,7 @@ void vtkOpenGLQuadricReliefMapper::SetDistanceMode(int mode)
   {
     this->DistanceMode = mode;
     this->ShaderOptionsTime.Modified();
-    this->Modified();
+    this->ModifiedShaderOptions();
   }
 }
 

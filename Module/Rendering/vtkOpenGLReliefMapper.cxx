@@ -131,6 +131,7 @@ void vtkOpenGLReliefMapper::SetSearchMethod(int method)
     this->WarnedAccelerationFallback = false;
     this->WarnedUnsupportedSearchMethod = false;
     this->SetActiveSearchMethod(method);
+    this->ModifiedShaderOptions();
   }
 }
 
@@ -167,7 +168,11 @@ void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
     vtkWarningMacro("LinearSteps " << steps << " is out of [" << MinimumLinearSteps << ", "
                                    << MaximumLinearSteps << "]; using " << clamped << ".");
   }
-  this->LinearSteps = clamped;
+  if (clamped != this->LinearSteps)
+  {
+    this->LinearSteps = clamped;
+    this->ModifiedShaderOptions();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetBinarySteps(int steps)
@@ -178,7 +183,11 @@ void vtkOpenGLReliefMapper::SetBinarySteps(int steps)
     vtkWarningMacro("BinarySteps " << steps << " is out of [0, " << MaximumBinarySteps
                                    << "]; using " << clamped << ".");
   }
-  this->BinarySteps = clamped;
+  if (clamped != this->BinarySteps)
+  {
+    this->BinarySteps = clamped;
+    this->ModifiedShaderOptions();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetSafetyRadiusTolerance(double tolerance)
@@ -195,8 +204,12 @@ void vtkOpenGLReliefMapper::SetSafetyRadiusTolerance(double tolerance)
                                              << " is more than the whole relief depth; using 1.");
     tolerance = 1.0;
   }
-  // read by the next render's acceleration update: nothing to rebuild here
-  this->SafetyRadiusTolerance = tolerance;
+  // read by the next render's acceleration update: no shader to rebuild
+  if (tolerance != this->SafetyRadiusTolerance)
+  {
+    this->SafetyRadiusTolerance = tolerance;
+    this->ModifiedShaderOptions();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
@@ -207,22 +220,35 @@ void vtkOpenGLReliefMapper::SetDepthScale(double depthScale)
   {
     this->DepthScale = depthScale;
     this->WarnedDepthScale = false;
+    this->ModifiedShaderOptions();
   }
 }
 
 void vtkOpenGLReliefMapper::SetSelfShadowing(bool enabled)
 {
-  this->SelfShadowing = enabled;
+  if (enabled != this->SelfShadowing)
+  {
+    this->SelfShadowing = enabled;
+    this->ModifiedShaderOptions();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetDepthCorrection(bool enabled)
 {
-  this->DepthCorrection = enabled;
+  if (enabled != this->DepthCorrection)
+  {
+    this->DepthCorrection = enabled;
+    this->ModifiedShaderOptions();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetTwoSidedRelief(bool enabled)
 {
-  this->TwoSidedRelief = enabled;
+  if (enabled != this->TwoSidedRelief)
+  {
+    this->TwoSidedRelief = enabled;
+    this->ModifiedShaderOptions();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetDisplayMode(int mode)
@@ -233,7 +259,29 @@ void vtkOpenGLReliefMapper::SetDisplayMode(int mode)
                                              "SetDisplayModeToSampleCount().");
     return;
   }
-  this->DisplayMode = mode;
+  if (mode != this->DisplayMode)
+  {
+    this->DisplayMode = mode;
+    this->ModifiedShaderOptions();
+  }
+}
+
+void vtkOpenGLReliefMapper::ModifiedShaderOptions()
+{
+  const vtkMTimeType before = this->Superclass::GetMTime();
+  if (before != this->ShaderOptionsMTime)
+  {
+    this->OtherChangesMTime = before; // a change of another kind came since the last one
+  }
+  this->Modified();
+  this->ShaderOptionsMTime = this->Superclass::GetMTime();
+}
+
+vtkMTimeType vtkOpenGLReliefMapper::GetMTime()
+{
+  const vtkMTimeType time = this->Superclass::GetMTime();
+  return this->HidingShaderOptions && time == this->ShaderOptionsMTime ? this->OtherChangesMTime
+                                                                       : time;
 }
 
 //------------------------------------------------------------------------------
@@ -592,8 +640,21 @@ bool vtkOpenGLReliefMapper::ShouldCullBackFaces(vtkRenderer* ren, vtkActor* acto
 bool vtkOpenGLReliefMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) ||
-    cellBO.ShaderSourceTime < this->ShaderOptionsTime;
+  // VTK rebuilds the shaders whenever the mapper is modified: the relief's options say
+  // themselves what they change (ShaderOptionsTime)
+  this->HidingShaderOptions = true;
+  const bool vtkRebuilds = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor);
+  this->HidingShaderOptions = false;
+  return vtkRebuilds || cellBO.ShaderSourceTime < this->ShaderOptionsTime;
+}
+
+bool vtkOpenGLReliefMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* actor)
+{
+  // and the buffers: no relief option changes them
+  this->HidingShaderOptions = true;
+  const bool vtkRebuilds = this->Superclass::GetNeedToRebuildBufferObjects(ren, actor);
+  this->HidingShaderOptions = false;
+  return vtkRebuilds;
 }
 
 //------------------------------------------------------------------------------

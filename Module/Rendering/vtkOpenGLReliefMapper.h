@@ -19,9 +19,10 @@
  * the choice is made at shader build time (see SetSearchMethod()). Methods that need
  * an acceleration image (MaximumMipmap's pyramid) build it themselves from the height
  * map, once per change of the map, unless one is given on port 2
- * (SetAccelerationConnection()). Setters that change only a uniform
- * (DepthScale, step counts, SelfShadowing, DepthCorrection, DisplayMode) neither
- * rebuild the shader nor the buffers.
+ * (SetAccelerationConnection()). Every setter modifies the mapper, as VTK's do; those
+ * that change only a uniform (DepthScale, step counts, SelfShadowing, DepthCorrection,
+ * DisplayMode, TwoSidedRelief) rebuild neither the shader nor the buffers, the search
+ * method and the frame's options only the shader.
  *
  * On the GPU the relief is one 16-bit depth texture with its mipmaps (vtkReliefTextureFilter's
  * depths lie on its levels): the searches read it, and the shading rebuilds the relief
@@ -240,6 +241,13 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
+  /**
+   * The modification time, as for any VTK object; to the checks of
+   * vtkOpenGLPolyDataMapper that rebuild shaders and buffers on any change, the time of
+   * the last change that was not one of the relief's options (ModifiedShaderOptions).
+   */
+  vtkMTimeType GetMTime() override;
+
 protected:
   vtkOpenGLReliefMapper();
   ~vtkOpenGLReliefMapper() override;
@@ -251,11 +259,17 @@ protected:
   void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* actor) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
 
+  /**
+   * Modified() for a relief option: a uniform, or a shader option that says so through
+   * ShaderOptionsTime. VTK's own checks do not rebuild shaders or buffers for it.
+   */
+  void ModifiedShaderOptions();
   /// Brings the relief surface and texture up to date; false when relief cannot be drawn.
   bool UpdateRelief(vtkRenderer* ren);
   /**
@@ -332,6 +346,9 @@ protected:
   bool WarnedUnsupportedSearchMethod = false;
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
+  vtkMTimeType ShaderOptionsMTime = 0; // the modification time a relief option last gave
+  vtkMTimeType OtherChangesMTime = 0;  // the last before it that was of another kind
+  bool HidingShaderOptions = false;    // within VTK's rebuild checks
   bool DrawingRelief = false;
   bool SurfaceClosed = false; // of the surface drawn, as of SurfaceClosedTime
   vtkMTimeType SurfaceClosedTime = 0;

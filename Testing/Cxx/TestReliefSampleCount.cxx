@@ -1,10 +1,12 @@
 // SampleCount display mode, the measure of cost: every covered pixel reports the height
 // samples its view ray took, within the bounds of the search method; switching the
-// method rebuilds the shader, uniform-only setters leave the mapper unmodified, and
-// released graphics resources come back.
+// method rebuilds the shader, uniform-only setters modify the mapper and rebuild
+// neither its shader nor its buffers, and released graphics resources come back.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -14,6 +16,30 @@
 
 namespace
 {
+// The relief mapper, counting its shader and buffer builds.
+class CountingMapper : public vtkOpenGLReliefMapper
+{
+public:
+  static CountingMapper* New();
+  vtkTypeMacro(CountingMapper, vtkOpenGLReliefMapper);
+  int ShaderBuilds = 0;
+  int BufferBuilds = 0;
+
+protected:
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override
+  {
+    ++this->ShaderBuilds;
+    this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+  }
+  void BuildBufferObjects(vtkRenderer* ren, vtkActor* actor) override
+  {
+    ++this->BufferBuilds;
+    this->Superclass::BuildBufferObjects(ren, actor);
+  }
+};
+vtkStandardNewMacro(CountingMapper);
+
 struct Counts
 {
   int Pixels = 0;
@@ -51,7 +77,10 @@ int TestReliefSampleCount(int, char*[])
   vtkNew<vtkRenderWindow> window;
   auto renderer = ReliefScene::LitRenderer(window, 200, 150);
   renderer->SetBackground(0.0, 0.0, 1.0);
-  auto mapper = ReliefScene::ReliefMapper(ReliefScene::Square(2.0), "bricks_height.png", 0.05);
+  vtkNew<CountingMapper> mapper;
+  mapper->SetInputData(ReliefScene::Square(2.0));
+  mapper->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
+  mapper->SetDepthScale(0.05);
   mapper->SetDisplayModeToSampleCount();
   renderer->AddActor(ReliefScene::ReliefActor(mapper, "bricks_color.png"));
   ReliefScene::ViewSquare(renderer, 45.0);
@@ -71,19 +100,31 @@ int TestReliefSampleCount(int, char*[])
   check(linearBinary.Minimum >= 6 && linearBinary.Maximum <= 15, "LinearBinary takes 6 to 15");
 
   const vtkMTimeType before = mapper->GetMTime();
+  const int shaderBuilds = mapper->ShaderBuilds;
+  const int bufferBuilds = mapper->BufferBuilds;
   mapper->SetDepthScale(0.02);
   mapper->SetLinearSteps(20);
   mapper->SetBinarySteps(3);
   mapper->SetSelfShadowing(false);
   mapper->SetDepthCorrection(false);
-  check(mapper->GetMTime() == before, "uniform-only setters do not modify the mapper");
+  mapper->SetTwoSidedRelief(true);
+  check(mapper->GetMTime() > before, "setters modify the mapper");
   Counts moreSteps = SampleCounts(window);
+  check(shaderBuilds > 0 && mapper->ShaderBuilds == shaderBuilds,
+    "uniform-only setters do not rebuild the shader");
+  check(bufferBuilds > 0 && mapper->BufferBuilds == bufferBuilds,
+    "uniform-only setters do not rebuild the buffers");
   check(moreSteps.Minimum >= 4 && moreSteps.Maximum <= 23, "LinearBinary 20 + 3 takes 4 to 23");
   check(moreSteps.Maximum > 15, "the new step counts reach the shader");
 
+  mapper->SetTwoSidedRelief(false);
+  const vtkMTimeType beforeMethod = mapper->GetMTime();
   mapper->SetSearchMethodToLinear();
+  check(mapper->GetMTime() > beforeMethod, "the search method modifies the mapper");
   mapper->SetLinearSteps(10);
   Counts linear = SampleCounts(window);
+  check(mapper->ShaderBuilds > shaderBuilds, "a new search method rebuilds the shader");
+  check(mapper->BufferBuilds == bufferBuilds, "and not the buffers");
   check(linear.Minimum >= 1 && linear.Maximum <= 10, "Linear takes 1 to 10");
 
   mapper->SetSearchMethodToLinearBinary();
