@@ -11,7 +11,7 @@ Plain Python, no dependencies; the output is fully determined by the code below.
   unit normals: what Blender or MeshLab export.
 * ``icosahedron.ply``: a regular icosahedron of circumradius 0.5, a separate corner
   per face, texture coordinates from a spherical projection (4 x 2 tiles, each face
-  kept on one side of the seam) and no normals: seed 003's "faceted crystal".
+  kept on one side of the seam) and no normals: Tichenor's (2012) "faceted crystal".
 """
 
 import math

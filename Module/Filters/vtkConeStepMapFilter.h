@@ -4,8 +4,8 @@
  *
  * Builds the map that vtkOpenGLReliefMapper's ConeStep search reads (relaxed cone
  * stepping, Policarpo and Oliveira, GPU Gems 3 ch. 18), made robust for the field the
- * mapper really intersects: the bilinear interpolation of the texel centres (seed 002
- * s3.1), as "Robust Cone Step Mapping" (Bán et al., EGSR 2024) shows the classic,
+ * mapper really intersects: the bilinear interpolation of the texel centres (Baboud and Decoret
+ * (2006) s3.1), as "Robust Cone Step Mapping" (Bán et al., EGSR 2024) shows the classic,
  * texel-centre generator is not.
  *
  * Coordinates are texels, texel (i, j)'s centre at (i, j); depth d is 0 at the top, 1

@@ -16,9 +16,9 @@
  * interpolated linearly as the rasteriser interpolates them) until every edge spans at
  * most MaximumEdgeTexels texels of the relief image, then every point moves inward along
  * its interpolated unit normal by DepthScale times the bilinear depth at its texture
- * coordinate (the field between texel centres, seed 002 s3.1, exactly what the mapper
- * searches). Normals are recomputed on the displaced mesh; texture coordinates are kept,
- * so the colour texture maps as on the relief.
+ * coordinate (the field between texel centres, Baboud and Decoret 2006, s3.1, exactly what the
+ * mapper searches). Normals are recomputed on the displaced mesh; texture coordinates are kept, so
+ * the colour texture maps as on the relief.
  *
  * Subdivision multiplies triangles by 4 per level: MaximumNumberOfTriangles caps the
  * level, with a warning naming the edge length reached. A mesh without texture

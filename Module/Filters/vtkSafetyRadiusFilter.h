@@ -15,14 +15,14 @@
  * from p to where its projection leaves S_n(c) is nowhere above the field once it has
  * been more than e below it. With e = 0 that part meets the field at most once, so a
  * search may jump from p to the square's exit and, if the ray is below the field there,
- * bisect knowing that the crossing is unique (seed 002 Fig. 5). The paper asks this of
- * unblocked rays only, those above the field all the way to p; the filter proves it for
- * every ray, which keeps the proof local and costs radius only where a ray would have to
- * be blocked to be safe (valley floors, at e = 0). Radius 0 promises nothing: the search
- * intersects that cell exactly. It is the right value wherever a ray can graze the field
- * and come out again next to the cell (hill tops, ridges, saddles: seed 002 Fig. 7),
- * which at e = 0 is most cells of a curved field, since any convexity lets a grazing ray
- * dip in and out; it is never clamped to 1.
+ * bisect knowing that the crossing is unique (Baboud and Decoret 2006, Fig. 5). The paper asks this
+ * of unblocked rays only, those above the field all the way to p; the filter proves it for every
+ * ray, which keeps the proof local and costs radius only where a ray would have to be blocked to be
+ * safe (valley floors, at e = 0). Radius 0 promises nothing: the search intersects that cell
+ * exactly. It is the right value wherever a ray can graze the field and come out again next to the
+ * cell (hill tops, ridges, saddles: Baboud and Decoret 2006, Fig. 7), which at e = 0 is most cells
+ * of a curved field, since any convexity lets a grazing ray dip in and out; it is never clamped to
+ * 1.
  *
  * Error bound. With e > 0 the radii are larger, and a search that trusts them can step
  * over a stretch where the ray is below the field, but only where it is at most e below.

@@ -2,7 +2,7 @@
  * @class   vtkOpenGLDerivativeReliefMapper
  * @brief   relief mapping on any mesh with texture coordinates: no tangents needed
  *
- * Derivative-based relief mapping (seed 003, Hoffman 2012): each fragment builds its
+ * Derivative-based relief mapping (Tichenor 2012): each fragment builds its
  * texture-space frame from the screen-space derivatives of its view-space position and
  * texture coordinates (dFdx, dFdy), so meshes that carry no tangents, such as PLY scans
  * and OBJ or STL exports, get relief without any per-vertex frame. The mesh is only
@@ -11,18 +11,18 @@
  *
  * The frame is the triangle's own affine texture mapping: the gradients of u and v
  * solved exactly from the derivatives, whatever the skew of the texture coordinates
- * (the seed's projection on normalized dFdx and dFdy holds only where they are
+ * (Tichenor's projection on normalized dFdx and dFdy holds only where they are
  * perpendicular). Everything after the frame is vtkOpenGLReliefMapper's: every search
  * method, self-shadowing, true depth, the relief normal rebuilt from the height map.
  *
  * - With point normals (smooth shading) depth is measured along the interpolated
  *   normal, and the texture axes are taken perpendicular to it. The relief normal
- *   follows the smooth normal, which is the seed's normal-difference correction
+ *   follows the smooth normal, which is Tichenor's normal-difference correction
  *   ("Dynamic surface normal calculations"), and the search itself follows it too: where
  *   two faces share their vertex normals, the frame agrees on both sides of their edge
  *   and the texture no longer tears there.
  * - Without normals the frame is the face's: flat shading, and the relief tears at each
- *   edge by an amount that grows with the crease angle and the depth (the seed's
+ *   edge by an amount that grows with the crease angle and the depth (Tichenor's
  *   "faceted crystal"; Documentation/results.md measures it). ComputeNormalsOn()
  *   gives such a mesh smooth point normals instead, and with them the smooth frame.
  *

@@ -72,8 +72,8 @@ public:
    * the fragment's normal, Eq. 7, everywhere. EXACT: from the ray point along the
    * direction perpendicular to the ray in the plane of the ray and the normal, Eq. 6,
    * where both principal curvatures bend away from the viewer (a < 0 and b < 0), and
-   * Eq. 7 elsewhere, as seed 000 does (s3.1-3.2; the paper finds it about half as
-   * fast). Changing it rebuilds the shader.
+   * Eq. 7 elsewhere, as Oliveira and Policarpo (2005) do (s3.1-3.2; the paper finds it about half
+   * as fast). Changing it rebuilds the shader.
    */
   virtual void SetDistanceMode(int mode);
   vtkGetMacro(DistanceMode, int);

@@ -3,7 +3,6 @@
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -47,7 +46,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 vtkStandardNewMacro(vtkOpenGLReliefMapper);
 
@@ -73,9 +71,9 @@ void UpperLeft(vtkMatrix4x4* matrix, vtkMatrix3x3* result)
 vtkOpenGLReliefMapper::vtkOpenGLReliefMapper()
 {
   this->SetNumberOfInputPorts(3);
-  // The internal filters' and helpers' errors and warnings are the mapper's.
+  // The internal filters' and the helper's errors and warnings are the mapper's.
   vtkReliefForwardMessages(this->ReliefTextureFilter, this);
-  vtkReliefForwardMessages(this->Textures, this);
+  this->Textures->SetOwner(this);
 }
 
 vtkOpenGLReliefMapper::~vtkOpenGLReliefMapper() = default;
@@ -394,7 +392,8 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   }
 
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!this->Textures->UploadRelief(window, relief, this->ReliefTextureFilter->GetUseInputNormals()))
+  if (!this->Textures->UploadRelief(
+        window, relief, this->ReliefTextureFilter->GetUseInputNormals()))
   {
     return false;
   }
@@ -437,8 +436,8 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
   {
     this->GetInputAlgorithm(2, 0)->Update();
   }
-  if (this->Textures->UpdateAcceleration(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
-        method, this->ReliefTextureFilter->GetOutput(), this->GetAcceleration(),
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (this->Textures->UpdateAcceleration(window, method, this->ReliefTextureFilter->GetOutput(), this->GetAcceleration(),
         this->SafetyRadiusTolerance))
   {
     this->SetActiveSearchMethod(this->SearchMethod);
@@ -503,8 +502,8 @@ std::string vtkOpenGLReliefMapper::GetFrameDefines()
 
 std::string vtkOpenGLReliefMapper::GetFrameShaderCode(const char* stage)
 {
-  return std::string("#define ") + stage + "\n" + this->GetFrameDefines() +
-    this->GetFrameSource() + "\n#undef " + stage + "\n";
+  return std::string("#define ") + stage + "\n" + this->GetFrameSource() + "\n#undef " + stage +
+    "\n";
 }
 
 bool vtkOpenGLReliefMapper::UpdateRelief(vtkRenderer* ren)
@@ -687,7 +686,16 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   // VTK reads the actor's textures with implicit derivatives, which jump wherever the
   // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
   // them at the level of the entry coordinates, as the relief itself is read.
-  vtkReliefShaderRewrites::ReadTexturesThrough(fragmentSource, "reliefTextureAtRay");
+  const int textureReads =
+    vtkReliefShaderRewrites::ReadTexturesThrough(fragmentSource, "reliefTextureAtRay");
+  if (textureReads == 0 && actor->GetTexture() && !this->WarnedTextureReads)
+  {
+    this->WarnedTextureReads = true;
+    vtkWarningMacro("This VTK's shader reads the actor's texture otherwise than "
+                    "vtkReliefShaderRewrites::ReadTexturesThrough follows (VTK 9.1 and 9.2): "
+                    "the colours are read at the hit with the texture's own filtering, which "
+                    "may blur at relief edges.");
+  }
   shaders[vtkShader::Fragment]->SetSource(fragmentSource);
   this->ReportMissingShaderTags();
 }
@@ -724,7 +732,7 @@ void vtkOpenGLReliefMapper::InsertReliefVertexShader(vtkShader* vertexShader)
   using Rewrites = vtkReliefShaderRewrites;
   std::string vertexSource = vertexShader->GetSource();
   this->Insert(vertexSource, Rewrites::VertexDeclarations,
-    std::string(vtkReliefVertexDec) + this->GetFrameShaderCode("RELIEF_VERTEX_STAGE"),
+    this->GetFrameDefines() + vtkReliefVertexDec + this->GetFrameShaderCode("RELIEF_VERTEX_STAGE"),
     &Rewrites::InsertAfter);
   this->Insert(vertexSource, Rewrites::VertexEnd, vtkReliefVertexImpl, &Rewrites::InsertBefore);
   vertexShader->SetSource(vertexSource);
@@ -752,7 +760,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   this->Insert(fragmentSource, Rewrites::FragmentSystem,
     "#extension GL_ARB_texture_gather : enable\n", &Rewrites::InsertAfter);
   this->Insert(fragmentSource, Rewrites::FragmentDeclarations,
-    this->GetActiveSearch().GetShaderDefine() +
+    this->GetActiveSearch().GetShaderDefine() + this->GetFrameDefines() +
       (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations,
     &Rewrites::InsertAfter);
   this->Insert(
@@ -785,7 +793,8 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
   if (!geometrySource.empty())
   {
     this->Insert(geometrySource, Rewrites::GeometryDeclarations,
-      std::string(vtkReliefGeometryDec) + this->GetFrameShaderCode("RELIEF_GEOMETRY_STAGE"),
+      this->GetFrameDefines() + vtkReliefGeometryDec +
+        this->GetFrameShaderCode("RELIEF_GEOMETRY_STAGE"),
       &Rewrites::InsertAfter);
     this->Insert(
       geometrySource, Rewrites::GeometryVertex, vtkReliefGeometryImpl, &Rewrites::InsertAfter);

@@ -309,9 +309,9 @@ protected:
   virtual const char* GetUnsupportedSearchReason() { return ""; }
   /// The frame's GLSL (vtkReliefCommon.glsl's frame interface): the tangent frame here.
   virtual std::string GetFrameSource();
-  /// Defines the frame's source reads, in every shader stage: none here.
+  /// Defines the frame's source reads, before all relief code of every stage: none here.
   virtual std::string GetFrameDefines();
-  /// The frame's code for one shader stage (RELIEF_VERTEX_STAGE, ...).
+  /// The frame's source for one shader stage (RELIEF_VERTEX_STAGE, ...).
   std::string GetFrameShaderCode(const char* stage);
   /// The tangent frame filter, made on first use.
   vtkReliefTangentFrameFilter* GetTangentFrameFilter();
@@ -345,7 +345,7 @@ protected:
   bool WarnedAccelerationFallback = false;
   bool WarnedUnsupportedSearchMethod = false;
   vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
-  vtkTimeStamp ShaderOptionsTime; // search method or relief on/off changed
+  vtkTimeStamp ShaderOptionsTime; // the search, frame, input normals or relief on/off changed
   vtkMTimeType ShaderOptionsMTime = 0; // the modification time a relief option last gave
   vtkMTimeType OtherChangesMTime = 0;  // the last before it that was of another kind
   bool HidingShaderOptions = false;    // within VTK's rebuild checks
@@ -365,6 +365,7 @@ protected:
   bool WarnedNoSelfShadowing = false;
   std::vector<const char*> MissingShaderTags; // by the shader being built
   bool WarnedMissingShaderTags = false;
+  bool WarnedTextureReads = false;
 
 private:
   vtkOpenGLReliefMapper(const vtkOpenGLReliefMapper&) = delete;

@@ -12,7 +12,6 @@
 #include "vtkReliefSearchMethod.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkSMPTools.h"
-#include "vtkSafetyRadiusFilter.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
@@ -106,7 +105,8 @@ bool vtkOpenGLReliefTextures::UploadRelief(
     if (this->OversizeReportTime <= relief->GetMTime())
     {
       this->OversizeReportTime.Modified(); // said once per height map
-      vtkErrorMacro("The height map is " << dimensions[0] << "x" << dimensions[1]
+      vtkObject* reporter = this->GetReporter();
+      vtkErrorWithObjectMacro(reporter, "The height map is " << dimensions[0] << "x" << dimensions[1]
                                          << " texels; this OpenGL takes textures of at most "
                                          << limit << "x" << limit
                                          << ". Resample it (vtkImageResize) to fit.");
@@ -154,7 +154,8 @@ bool vtkOpenGLReliefTextures::UploadRelief(
   }
   if (!uploaded)
   {
-    vtkErrorMacro("Could not upload the " << dimensions[0] << "x" << dimensions[1]
+    vtkObject* reporter = this->GetReporter();
+    vtkErrorWithObjectMacro(reporter, "Could not upload the " << dimensions[0] << "x" << dimensions[1]
                                           << " relief texture to the GPU.");
     return false;
   }
@@ -197,11 +198,11 @@ vtkImageData* vtkOpenGLReliefTextures::BuildAcceleration(
   {
     this->AccelerationFilter = vtk::TakeSmartPointer(method.NewAccelerationFilter());
     this->AccelerationFilterMethod = method.Id;
-    vtkReliefForwardMessages(this->AccelerationFilter, this);
+    vtkReliefForwardMessages(this->AccelerationFilter, this->GetReporter());
   }
-  if (auto* safety = vtkSafetyRadiusFilter::SafeDownCast(this->AccelerationFilter))
+  if (method.ConfigureFilter)
   {
-    safety->SetErrorTolerance(safetyRadiusTolerance);
+    method.ConfigureFilter(this->AccelerationFilter, safetyRadiusTolerance);
   }
   this->AccelerationFilter->SetInputData(relief);
   this->AccelerationFilter->Update();
@@ -227,7 +228,8 @@ bool vtkOpenGLReliefTextures::CheckAcceleration(
   {
     return true;
   }
-  vtkErrorMacro("The acceleration image is "
+  vtkObject* reporter = this->GetReporter();
+  vtkErrorWithObjectMacro(reporter, "The acceleration image is "
     << dimensions[0] << "x" << dimensions[1] << "x" << dimensions[2] << " with "
     << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
     << (values ? values->GetDataTypeAsString() : "nothing") << "; the " << method.Name
@@ -254,7 +256,8 @@ bool vtkOpenGLReliefTextures::UploadAcceleration(vtkOpenGLRenderWindow* window,
   if (!UploadTexture(this->AccelerationTexture, window, acceleration->GetDimensions(), values,
         internalFormat, false))
   {
-    vtkErrorMacro("Could not upload the " << method.Name << " acceleration image to the GPU.");
+    vtkObject* reporter = this->GetReporter();
+    vtkErrorWithObjectMacro(reporter, "Could not upload the " << method.Name << " acceleration image to the GPU.");
     return false;
   }
   this->AccelerationTextureBytes = values->GetNumberOfValues() * values->GetDataTypeSize();

@@ -8,7 +8,7 @@
  * (nx, ny) when one was given with the heights, and the acceleration image of the search
  * method (vtkReliefSearchMethod: the filter that makes it, its encoding, its uniforms),
  * precomputed or built here, each uploaded once per change. Errors say what to do, once
- * per change of what they are about.
+ * per change of what they are about, as the owner's (SetOwner): users know the mapper.
  */
 #ifndef vtkOpenGLReliefTextures_h
 #define vtkOpenGLReliefTextures_h
@@ -33,6 +33,9 @@ public:
   static vtkOpenGLReliefTextures* New();
   vtkTypeMacro(vtkOpenGLReliefTextures, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The mapper whose messages these are; not counted: the mapper owns the helper.
+  void SetOwner(vtkObject* owner) { this->Owner = owner; }
 
   /**
    * Uploads vtkReliefTextureFilter's output `relief` (its depths; with inputNormals its
@@ -77,6 +80,10 @@ protected:
   bool UploadAcceleration(vtkOpenGLRenderWindow* window, const vtkReliefSearchMethod& method,
     vtkImageData* acceleration);
 
+  /// Who reports: the owner, or the helper itself without one.
+  vtkObject* GetReporter() { return this->Owner ? this->Owner : this; }
+
+  vtkObject* Owner = nullptr;
   vtkNew<vtkTextureObject> DepthTexture;  // 16-bit depth: searched, and shaded from
   vtkNew<vtkTextureObject> NormalTexture; // (nx, ny) of an input normal map, if one is used
   vtkNew<vtkTextureObject> AccelerationTexture; // what the search method reads besides

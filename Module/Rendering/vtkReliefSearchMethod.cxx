@@ -17,6 +17,12 @@ vtkReliefAccelerationFilter* NewFilter()
   return Filter::New();
 }
 
+// SafetyRadiusTolerance, the error bound e of vtkSafetyRadiusFilter's radii.
+void SetErrorTolerance(vtkReliefAccelerationFilter* filter, double tolerance)
+{
+  vtkSafetyRadiusFilter::SafeDownCast(filter)->SetErrorTolerance(tolerance);
+}
+
 // vtkConeStepMapFilter's ratio range, which EncodeCone's bytes are relative to.
 void SetConeUniforms(vtkShaderProgram* program, const int reliefSize[2])
 {
@@ -47,19 +53,19 @@ using Method = vtkReliefSearchMethod;
 // One entry per method, in order of Id.
 const vtkReliefSearchMethod Methods[] = {
   { vtkOpenGLReliefMapper::LINEAR, "Linear", "reliefSearchLinear", true, Method::NO_ACCELERATION,
-    nullptr, nullptr },
+    nullptr, nullptr, nullptr },
   { vtkOpenGLReliefMapper::LINEAR_BINARY, "LinearBinary", "reliefSearchLinearBinary", true,
-    Method::NO_ACCELERATION, nullptr, nullptr },
+    Method::NO_ACCELERATION, nullptr, nullptr, nullptr },
   { vtkOpenGLReliefMapper::SECANT, "Secant", "reliefSearchSecant", true, Method::NO_ACCELERATION,
-    nullptr, nullptr },
+    nullptr, nullptr, nullptr },
   { vtkOpenGLReliefMapper::EXACT_DDA, "ExactDDA", "reliefSearchExactDDA", false,
-    Method::NO_ACCELERATION, nullptr, nullptr },
+    Method::NO_ACCELERATION, nullptr, nullptr, nullptr },
   { vtkOpenGLReliefMapper::SAFETY_RADIUS, "SafetyRadius", "reliefSearchSafetyRadius", false,
-    Method::FLOAT_TEXELS, &NewFilter<vtkSafetyRadiusFilter>, nullptr },
+    Method::FLOAT_TEXELS, &NewFilter<vtkSafetyRadiusFilter>, &SetErrorTolerance, nullptr },
   { vtkOpenGLReliefMapper::CONE_STEP, "ConeStep", "reliefSearchConeStep", false,
-    Method::CONE_BYTES, &NewFilter<vtkConeStepMapFilter>, &SetConeUniforms },
+    Method::CONE_BYTES, &NewFilter<vtkConeStepMapFilter>, nullptr, &SetConeUniforms },
   { vtkOpenGLReliefMapper::MAXIMUM_MIPMAP, "MaximumMipmap", "reliefSearchMaximumMipmap", false,
-    Method::FLOAT_TEXELS, &NewFilter<vtkMaximumMipmapFilter>, &SetPyramidUniforms },
+    Method::FLOAT_TEXELS, &NewFilter<vtkMaximumMipmapFilter>, nullptr, &SetPyramidUniforms },
 };
 
 std::string Squeezed(const std::string& name)

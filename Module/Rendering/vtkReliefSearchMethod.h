@@ -42,6 +42,8 @@ public:
   Encodings Encoding;
   /// A new filter making the image the method reads (the caller owns it); null: none.
   vtkReliefAccelerationFilter* (*NewAccelerationFilter)();
+  /// Gives that filter the mapper's setting for it (SafetyRadiusTolerance); null: none.
+  void (*ConfigureFilter)(vtkReliefAccelerationFilter* filter, double tolerance);
   /// Sets the uniforms that describe the acceleration image of a relief texture of
   /// reliefSize texels; null: none.
   void (*SetUniforms)(vtkShaderProgram* program, const int reliefSize[2]);

@@ -60,8 +60,8 @@ namespace
 // The number of matches of `pattern` in `source`, each replaced by `replacement`.
 int ReplaceAll(std::string& source, const std::regex& pattern, const std::string& replacement)
 {
-  const int matches = static_cast<int>(
-    std::distance(std::sregex_iterator(source.begin(), source.end(), pattern), std::sregex_iterator()));
+  const int matches = static_cast<int>(std::distance(
+    std::sregex_iterator(source.begin(), source.end(), pattern), std::sregex_iterator()));
   if (matches > 0)
   {
     source = std::regex_replace(source, pattern, replacement);

@@ -7,8 +7,8 @@
 // several rounds so machine noise hits all alike. Reported: median and fastest ms/frame
 // over all timed frames, their ratios to plain texturing, and the mean samples per
 // covered pixel (SampleCount mode). Then every search method at three height-map sizes
-// (seed 002's Table 1), the acceleration filters' run times, and every method's speed
-// against its accuracy (ReliefAccuracy.h).
+// (Baboud and Decoret's (2006) Table 1), the acceleration filters' run times, and every method's
+// speed against its accuracy (ReliefAccuracy.h).
 #include "ReliefAccuracy.h"
 #include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
@@ -107,7 +107,7 @@ void ViewSquareFilling(vtkRenderer* renderer, double angle)
   renderer->ResetCameraClippingRange();
 }
 
-// Seed 002's Table 1 for every search method: the same height field at three
+// Baboud and Decoret's (2006) Table 1 for every search method: the same height field at three
 // resolutions and three view angles; each method's cost relative to LinearBinary's,
 // measured in the same run, interleaved.
 std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
@@ -538,9 +538,10 @@ int main(int argc, char* argv[])
           << "the fastest frame is the one least disturbed by other work on a shared host.\n\n"
           << machine.str();
   const std::string methodsContext =
-    "Search methods (seed 002 Table 1): the same square and light, the stones height map\n"
-    "resampled to each size (4 tiles across the square), DepthScale 0.02, self-shadowing on,\n"
-    "step counts 10 + 5; each method's figures relative to LinearBinary's in the same run.\n"
+    "Search methods (Baboud and Decoret 2006, Table 1): the same square and light, the stones\n"
+    "height map resampled to each size (4 tiles across the square), DepthScale 0.02,\n"
+    "self-shadowing on, step counts 10 + 5; each method's figures relative to LinearBinary's\n"
+    "in the same run.\n"
     "Samples are height reads per covered pixel (a cell test or pyramid node counts one);\n"
     "the display caps a pixel's count at 255.\n\n";
   const std::string filtersContext = "Acceleration filters, on the stones height map resampled, "

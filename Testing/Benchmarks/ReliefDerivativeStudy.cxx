@@ -292,11 +292,11 @@ std::vector<FrameError> MeasureFrameError(const std::vector<double>& views)
       const dvec3 alongY = onPlane(0.0, 1.0) - centre;
       const dvec2 uvAlongX = uvOf(alongX);
       const dvec2 uvAlongY = uvOf(alongY);
-      // the surface ray of seed 003: the view ray's run along the plane per unit depth
+      // the surface ray of Tichenor (2012): the view ray's run along the plane per unit depth
       const dvec3 view3 = forward;
       const dvec3 run = (view3 - normal * glm::dot(view3, normal)) / std::abs(view3.z);
       const dvec2 exact = uvOf(run);
-      // seed 003, Appendix: dUVdT * dot(SR, T) + dUVdB * dot(SR, B)
+      // Tichenor (2012), Appendix: dUVdT * dot(SR, T) + dUVdB * dot(SR, B)
       const dvec3 t = glm::normalize(alongX);
       const dvec3 b = glm::normalize(alongY);
       const dvec2 seed = uvAlongX / glm::length(alongX) * glm::dot(run, t) +
@@ -667,13 +667,13 @@ std::string Report(const std::vector<Accuracy>& accuracy, const std::vector<Seam
   SeamTable(section, seams, false, options.SweepCrease);
 
   section << "The frame itself, on the CPU: the texture-space run of the view ray at the "
-             "centre of a 320x240 view (30-degree view angle) of a plane, as seed 003's "
+             "centre of a 320x240 view (30-degree view angle) of a plane, as Tichenor's (2012) "
              "Appendix computes it (projected on normalized dFdx and dFdy of the position) "
              "and as this mapper does (reliefDerivativeAxes, the shader's source), against "
              "the exact run; relative error. The camera tilts about a screen axis (roll 0: "
              "the pixel's steps on the plane stay at right angles) or a screen diagonal "
              "(roll 45: they close toward each other at grazing views).\n\n"
-          << "| view angle | roll | angle between the steps | seed 003's frame | this "
+          << "| view angle | roll | angle between the steps | Tichenor's (2012) frame | this "
              "frame |\n| ---: | ---: | ---: | ---: | ---: |\n";
   for (const FrameError& e : frameErrors)
   {
@@ -721,7 +721,8 @@ std::string Report(const std::vector<Accuracy>& accuracy, const std::vector<Seam
       for (bool seedFrame : { true, false })
       {
         std::ostringstream name;
-        name << (seedFrame ? "seed 003's frame" : "this frame (dual basis)") << ", roll " << roll;
+        name << (seedFrame ? "Tichenor's (2012) frame" : "this frame (dual basis)") << ", roll "
+             << roll;
         ReliefChart::Series line{ name.str() };
         line.Line = true;
         for (const FrameError& e : frameErrors)

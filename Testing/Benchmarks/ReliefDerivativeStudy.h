@@ -1,4 +1,4 @@
-// The derivative frame (seed 003, vtkOpenGLDerivativeReliefMapper) against the tangent
+// The derivative frame (Tichenor 2012, vtkOpenGLDerivativeReliefMapper) against the tangent
 // frame (vtkOpenGLReliefMapper): both against the ground truth on a plane and a torus
 // (wrong pixels, depth and colour error, samples, ms/frame, and how far the two are from
 // each other), and the seam each leaves at a crease: on a sheet folded into four flat
@@ -73,7 +73,7 @@ struct FrameError
   double View = 0.0;
   double Roll = 0.0;
   double StepAngle = 90.0; ///< degrees between dFdx and dFdy of the position
-  double SeedError = 0.0;  ///< seed 003's projection on normalized dFdx, dFdy (relative)
+  double SeedError = 0.0;  ///< Tichenor's (2012) projection on normalized dFdx, dFdy (relative)
   double DualError = 0.0;  ///< reliefDerivativeAxes, the shader's (relative)
 };
 std::vector<FrameError> MeasureFrameError(const std::vector<double>& views);

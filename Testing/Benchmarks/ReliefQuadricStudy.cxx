@@ -33,8 +33,8 @@ struct Shape
 
 // 48 facets around: the polygons' sag below the surface stays under a fifth of
 // DepthScale, outside which no frame can draw the relief. The cylinder's views frame its
-// middle, so its outline is the curved sides, not the open rims (seed 000 has no answer
-// at a mesh's boundary, where the relief ends with the mesh).
+// middle, so its outline is the curved sides, not the open rims (Oliveira and Policarpo 2005 have
+// no answer at a mesh's boundary, where the relief ends with the mesh).
 constexpr int Facets = 48;
 const Shape Shapes[] = {
   { "sphere", ReliefScene::Sphere, { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 } },

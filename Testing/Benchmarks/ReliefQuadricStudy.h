@@ -1,9 +1,8 @@
-// The quadric frame against the flat one (seed 000), and its two distance modes against
-// each other: stones on a sphere, a cylinder and a torus, three views each, every frame
-// rendered beside the ground truth (the same relief as real geometry on the finely
-// regenerated shape) and measured: silhouette error, wrong pixels, height samples per
-// pixel and ms/frame. The accuracy regression test asserts on the measurements; the
-// bench reports them with a chart.
+// The quadric frame against the flat one (Oliveira and Policarpo 2005), and its two distance modes
+// against each other: stones on a sphere, a cylinder and a torus, three views each, every frame
+// rendered beside the ground truth (the same relief as real geometry on the finely regenerated
+// shape) and measured: silhouette error, wrong pixels, height samples per pixel and ms/frame. The
+// accuracy regression test asserts on the measurements; the bench reports them with a chart.
 #ifndef ReliefQuadricStudy_h
 #define ReliefQuadricStudy_h
 

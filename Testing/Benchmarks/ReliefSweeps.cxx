@@ -77,7 +77,8 @@ vtkSmartPointer<vtkImageData> Stones(int size)
 }
 
 // A 64x64 height image (white = high) of walls `width` texels wide every 16 texels along
-// both axes, rising from a low floor: seed 002's Fig. 11, feature width as a parameter.
+// both axes, rising from a low floor: Baboud and Decoret's (2006) Fig. 11, feature width as a
+// parameter.
 vtkSmartPointer<vtkImageData> Walls(int width)
 {
   return ReliefScene::HeightImage(
@@ -203,7 +204,7 @@ std::vector<Sweep> Sweeps(bool quick)
     "On a curved surface the flat frame keeps the polygons' outline (the relief cannot "
     "carve the silhouette) and measures depth below flat facets rather than the curved "
     "surface (the truth: the sphere regenerated finely, then displaced), whatever the "
-    "search: what the quadric frame of seed 000 fixes.",
+    "search: what the quadric frame of Oliveira and Policarpo (2005) fixes.",
     true };
   for (double value : pick({ 0.25, 0.5, 1.0, 2.0 }, { 0.5, 2.0 }))
   {

@@ -1,4 +1,4 @@
-// The derivative frame against the ground truth and against the tangent frame (seed 003;
+// The derivative frame against the ground truth and against the tangent frame (Tichenor 2012;
 // the harness of vtkReliefDisplacementFilter), through ReliefDerivativeStudy: stones on
 // a plane and on a torus, three views each. No baseline image: the truth and the
 // tangent frame are the references.

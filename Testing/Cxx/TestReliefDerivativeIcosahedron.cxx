@@ -1,5 +1,5 @@
 // icosahedron.ply: twenty faces meeting at 42-degree creases, texture coordinates from a
-// spherical projection, no normals. Expected, as seed 003 reports it: "an object embedded
+// spherical projection, no normals. Expected, as Tichenor (2012) reports it: "an object embedded
 // in a faceted crystal": each face shows the stones through its own flat frame, and the
 // stones break at every edge.
 #include "ReliefScene.h"

@@ -1,4 +1,4 @@
-// Texture tearing at creases (seed 003's second limit), through ReliefDerivativeStudy: a
+// Texture tearing at creases (Tichenor's (2012) second limit), through ReliefDerivativeStudy: a
 // sheet folded into flat panels, seen 45 degrees off its normal across the folds, with a
 // ramp texture whose colour is the hit's texture coordinates. No baseline image: the
 // same measure halfway between the folds, where the sheet is flat, is the reference.

@@ -9,7 +9,8 @@
 // exact by the unit tests.
 //
 // Every method of vtkReliefSearchMethod is compared: the mirror's search of the method's
-// GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it. No baseline image:
+// GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it. No
+// baseline image:
 // the depth buffer is checked against the mirror, not against a picture.
 #include "ReliefMirrorMaps.h"
 #include "ReliefScene.h"
@@ -109,7 +110,7 @@ constexpr int MinimumCompared = 300;
 constexpr double MaximumLod = -0.1;
 
 // What the mirror reads, made from the relief texture the mapper uploaded by the filters
-// the mapper runs (vtkOpenGLReliefMapper::ComputeAcceleration: a setting it gives its
+// the mapper runs (vtkOpenGLReliefTextures::BuildAcceleration: a setting it gives its
 // filter must be given here too).
 struct Maps
 {
@@ -206,7 +207,8 @@ mirror::ReliefTangentVertex SquareBasis(const View& view, vtkPolyData* surface)
       directions[column][row] = float(view.WorldToView->GetElement(row, column));
     }
   }
-  return mirror::reliefTangentVertex(glm::vec3(float(normal[0]), float(normal[1]), float(normal[2])),
+  return mirror::reliefTangentVertex(
+    glm::vec3(float(normal[0]), float(normal[1]), float(normal[2])),
     glm::vec3(float(tangent[0]), float(tangent[1]), float(tangent[2])),
     glm::vec2(float(scale[0]), float(scale[1])), glm::transpose(glm::inverse(directions)),
     directions);
@@ -309,13 +311,13 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
       }
       // vtkReliefFragmentImpl.glsl's calls of the frame, in float as there
       mirror::ReliefFragment pixel{};
-      pixel.positionVC = glm::vec3(float(fragment.PositionVC[0]), float(fragment.PositionVC[1]),
+      const glm::vec3 positionVC(float(fragment.PositionVC[0]), float(fragment.PositionVC[1]),
         float(fragment.PositionVC[2]));
-      pixel.viewVC = glm::normalize(pixel.positionVC);
+      pixel.viewVC = glm::normalize(positionVC);
       pixel.tcoord = fragment.TCoord;
       pixel.frontFacing = true;
       pixel.depthScale = depthScale;
-      pixel.eyeDistance = glm::length(pixel.positionVC);
+      pixel.eyeDistance = glm::length(positionVC);
       const mirror::ReliefFrame frame = mirror::reliefTangentFrame(
         mirror::reliefTangentBasis(vertex.normal, vertex.tangent, vertex.textureScale, true));
       const mirror::ReliefRay ray = mirror::reliefFrameViewRay(frame, pixel);

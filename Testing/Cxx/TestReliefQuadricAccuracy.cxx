@@ -1,10 +1,9 @@
-// The quadric frame's outline against the geometric ground truth (seed 000 s3; the
-// harness of vtkReliefDisplacementFilter), through ReliefQuadricStudy: stones on a
-// sphere, a cylinder and a torus, three views each. The silhouette error (pixels whose
-// coverage differs from the truth's, over the same count for the bare polygons: 1 is no
-// better than the polygons, 0 perfect) must be at most 0.25 with the quadric frame, in
-// both distance modes; the flat frame, measured beside it, is about 1. No baseline
-// image: the truth is the reference.
+// The quadric frame's outline against the geometric ground truth (Oliveira and Policarpo 2005, s3;
+// the harness of vtkReliefDisplacementFilter), through ReliefQuadricStudy: stones on a sphere, a
+// cylinder and a torus, three views each. The silhouette error (pixels whose coverage differs from
+// the truth's, over the same count for the bare polygons: 1 is no better than the polygons, 0
+// perfect) must be at most 0.25 with the quadric frame, in both distance modes; the flat frame,
+// measured beside it, is about 1. No baseline image: the truth is the reference.
 #include "ReliefQuadricStudy.h"
 
 #include <cstdlib>

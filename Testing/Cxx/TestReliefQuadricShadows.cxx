@@ -1,11 +1,10 @@
-// Shadows with other actors through VTK's shadow-map passes (seed 000 s3.5, Fig. 13):
-// the shadow map is baked with the relief mapper's own shader, so it holds the relief's
-// depth. A stone sphere over a plain floor under a spotlight, the flat frame (left) and
-// the quadric frame (right): the quadric sphere's shadow has the stones' outline, the
-// flat one the polygons' disc. Beside the baseline, the test checks that the quadric
-// shadow is the smaller (light passes between the stones at its rim) and that both
-// spheres do cast one; and that relief receives shadows: a plain sphere over a floor of
-// rivets darkens the floor only when the shadow passes run.
+// Shadows with other actors through VTK's shadow-map passes (Oliveira and Policarpo 2005, s3.5,
+// Fig. 13): the shadow map is baked with the relief mapper's own shader, so it holds the relief's
+// depth. A stone sphere over a plain floor under a spotlight, the flat frame (left) and the quadric
+// frame (right): the quadric sphere's shadow has the stones' outline, the flat one the polygons'
+// disc. Beside the baseline, the test checks that the quadric shadow is the smaller (light passes
+// between the stones at its rim) and that both spheres do cast one; and that relief receives
+// shadows: a plain sphere over a floor of rivets darkens the floor only when the shadow passes run.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"

@@ -1,9 +1,9 @@
-// vtkOpenGLQuadricReliefMapper on the shapes of seed 000, in one distance mode (the
-// argument: Approximate or Exact): a sphere, a cylinder, the inside of a torus's ring
-// (negative Gaussian curvature, the saddles of Fig. 14) and an open piece of cylinder
-// (a mesh with boundaries, where the relief simply ends with the mesh, seen so that its
-// inside shows beside its outer side). Stones on each, seen so that outlines cross the
-// relief, with the actors' default properties. Regression images, one per mode.
+// vtkOpenGLQuadricReliefMapper on the shapes of Oliveira and Policarpo (2005), in one distance mode
+// (the argument: Approximate or Exact): a sphere, a cylinder, the inside of a torus's ring
+// (negative Gaussian curvature, the saddles of Fig. 14) and an open piece of cylinder (a mesh with
+// boundaries, where the relief simply ends with the mesh, seen so that its inside shows beside its
+// outer side). Stones on each, seen so that outlines cross the relief, with the actors' default
+// properties. Regression images, one per mode.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"

@@ -1,10 +1,10 @@
 // vtkOpenGLQuadricReliefMapper: cobblestones on a coarse sphere and torus carve their
-// outlines (seed 000 Fig. 9 and 15), where the flat frame keeps the polygons'. The
-// baseline shows both shapes; beside it the test checks that the outline really moves
-// (pixels the flat frame covers are uncovered), that NaN quadrics draw as the flat
-// frame does, that a quadric array of the wrong size or type is recomputed with one
-// warning, that a grid search falls back to LinearBinary with one warning, and that a
-// mesh without texture coordinates gives one error and draws plainly.
+// outlines (Oliveira and Policarpo 2005, Fig. 9 and 15), where the flat frame keeps the polygons'.
+// The baseline shows both shapes; beside it the test checks that the outline really moves (pixels
+// the flat frame covers are uncovered), that NaN quadrics draw as the flat frame does, that a
+// quadric array of the wrong size or type is recomputed with one warning, that a grid search falls
+// back to LinearBinary with one warning, and that a mesh without texture coordinates gives one
+// error and draws plainly.
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 

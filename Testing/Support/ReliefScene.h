@@ -93,8 +93,8 @@ int SearchMethodNamed(const std::string& name);
 /// A width x height one-component float height image, heightAt(i, j) at texel (i, j).
 vtkSmartPointer<vtkImageData> HeightImage(
   int width, int height, const std::function<float(int, int)>& heightAt);
-/// Thin features (seed 002 Fig. 11): a 64x64 height image (white = high) of walls and
-/// spikes one texel wide rising from a low floor.
+/// Thin features (Baboud and Decoret 2006, Fig. 11): a 64x64 height image (white = high) of walls
+/// and spikes one texel wide rising from a low floor.
 vtkSmartPointer<vtkImageData> ThinFeatures();
 /// Thin features on a square seen `angle` degrees from its normal, searched by `method`.
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowThinFeatures(
@@ -122,7 +122,7 @@ void ShowQuadricSilhouettes(vtkRenderWindow* window, int width, int height);
 vtkSmartPointer<vtkOpenGLReliefMapper> ShowDerivativeMesh(vtkRenderWindow* window, int width,
   int height, const std::string& mesh, bool normals, double left = 0.0, double right = 1.0);
 /// Tangent-free relief: torus.obj with its normals (smooth frame, left), without them
-/// (flat frame, middle), and icosahedron.ply (seed 003's faceted crystal, right).
+/// (flat frame, middle), and icosahedron.ply (Tichenor's (2012) faceted crystal, right).
 void ShowDerivativeFrames(vtkRenderWindow* window, int width, int height);
 /// A spotlight 3 above the origin, pointing down, as the only light of `renderer`.
 void AddSpotlight(vtkRenderer* renderer);

@@ -1,4 +1,4 @@
-// The derivative frame (vtkReliefDerivativeFrame.glsl, seed 003), run on the CPU through
+// The derivative frame (vtkReliefDerivativeFrame.glsl, Tichenor 2012), run on the CPU through
 // the source the GPU compiles: the texture axes it solves from screen-space derivatives
 // must reproduce a triangle's exact affine texture mapping, skewed or not, against a
 // face or a tilted interpolated normal, and say where the derivatives hold no mapping.
@@ -87,7 +87,7 @@ TEST(ReliefDerivativeFrame, ReproducesTheTrianglesMappingAgainstItsFaceNormal)
 
 TEST(ReliefDerivativeFrame, SkewedTextureAxesAreNotProjectedOnTheSteps)
 {
-  // u along x, v at 45 degrees: seed 003's projection on normalized dFdx, dFdy (here
+  // u along x, v at 45 degrees: Tichenor's (2012) projection on normalized dFdx, dFdy (here
   // x and y) would give v no change along x; the exact mapping has one
   Triangle t;
   t.Normal = vec3(0.0f, 0.0f, 1.0f);
@@ -188,7 +188,6 @@ template <typename Fragment>
 Fragment FaceFragment(vec3 view)
 {
   Fragment fragment{};
-  fragment.positionVC = vec3(0.0f, 0.0f, -1.0f);
   fragment.viewVC = view;
   fragment.positionAlongX = vec3(0.01f, 0.0f, 0.0f);
   fragment.positionAlongY = vec3(0.0f, 0.01f, 0.0f);
@@ -207,7 +206,8 @@ TEST(ReliefDerivativeFrame, DepthFollowsTheVertexNormalOnlyWhereTheMeshHasThem)
   namespace smooth = ReliefCpuMirror::DerivativeNormals;
   const vec3 view = glm::normalize(vec3(0.3f, 0.0f, -1.0f));
   const vec3 tilted = glm::normalize(vec3(0.2f, 0.0f, 1.0f));
-  const face::ReliefFrame flat = face::reliefDerivativeFrame(FaceFragment<face::ReliefFragment>(view), tilted);
+  const face::ReliefFrame flat =
+    face::reliefDerivativeFrame(FaceFragment<face::ReliefFragment>(view), tilted);
   EXPECT_TRUE(flat.usable);
   EXPECT_EQ(flat.normal, vec3(0.0f, 0.0f, 1.0f));
   const auto fragment = FaceFragment<smooth::ReliefFragment>(view);

@@ -39,8 +39,8 @@ TEST_F(ReliefExactSearch, ReferenceSolvesAPlaneAndASlope)
 
 TEST_F(ReliefExactSearch, ReferenceCatchesTheSaddleThatRasterizationMisses)
 {
-  // Seed 002 Fig. 3: a ray crossing a saddle cell between two centrelines, above the
-  // field at both, dips below the patch in between.
+  // Baboud and Decoret 2006, Fig. 3: a ray crossing a saddle cell between two centrelines, above
+  // the field at both, dips below the patch in between.
   DepthField saddle;
   saddle.Width = 2;
   saddle.Height = 2;
@@ -61,7 +61,8 @@ TEST_F(ReliefExactSearch, ReferenceCatchesTheSaddleThatRasterizationMisses)
 
 TEST_F(ReliefExactSearch, ExactDDAMatchesTheReferenceEverywhere)
 {
-  ExpectExact(*AllScenes, "ExactDDA", [](const ReliefRay& ray) { return reliefSearchExactDDA(ray, 0, 0); });
+  ExpectExact(*AllScenes, "ExactDDA",
+    [](const ReliefRay& ray) { return reliefSearchExactDDA(ray, 0, 0); });
 }
 
 TEST_F(ReliefExactSearch, MaximumMipmapMatchesTheReferenceEverywhere)
@@ -103,7 +104,8 @@ TEST_F(ReliefExactSearch, AFloorAtTheDeepestLevelIsMetAtTheEndOfTheRay)
   Use(floor);
   for (const ReliefRay& ray : ViewRays(300, 0.1f))
   {
-    for (const ReliefHit& hit : { reliefSearchExactDDA(ray, 0, 0), reliefSearchMaximumMipmap(ray, 0, 0) })
+    for (const ReliefHit& hit :
+      { reliefSearchExactDDA(ray, 0, 0), reliefSearchMaximumMipmap(ray, 0, 0) })
     {
       ASSERT_TRUE(hit.hit);
       ASSERT_NEAR(hit.t, 1.0f, 1e-5f);

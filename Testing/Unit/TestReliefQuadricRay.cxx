@@ -286,7 +286,6 @@ template <typename Fragment>
 Fragment FragmentSeenAlong(vec3 view)
 {
   Fragment fragment{};
-  fragment.positionVC = vec3(0.0f, 0.0f, -2.0f);
   fragment.viewVC = view;
   fragment.tcoord = vec2(0.3f, 0.6f);
   fragment.frontFacing = true;

@@ -167,7 +167,8 @@ TEST_F(ReliefSafetyRadius, ExactOnEveryRayAtZeroTolerance)
               << 100.0 * ZeroShare(radii[scene.Name]) << "% zero\n";
   }
   ExpectExact(
-    *AllScenes, "SafetyRadius", [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray, 0, 0); },
+    *AllScenes, "SafetyRadius",
+    [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray, 0, 0); },
     Tolerance, [&radii](const Scene& scene) { CurrentRadii = &radii[scene.Name]; });
   ExpectGrazingHits(*AllScenes, "SafetyRadius",
     [](const ReliefRay& ray) { return reliefSearchSafetyRadius(ray, 0, 0); },
@@ -223,8 +224,8 @@ TEST_F(ReliefSafetyRadius, NoSampledRayContradictsARadius)
 
 TEST_F(ReliefSafetyRadius, TheCheckFindsRaysThroughAPeak)
 {
-  // seed 002 Fig. 7: next to a peak a ray can meet the field twice arbitrarily close,
-  // so radius 0 is the only one possible there, and the filter says so (no clamping)
+  // Baboud and Decoret 2006, Fig. 7: next to a peak a ray can meet the field twice arbitrarily
+  // close, so radius 0 is the only one possible there, and the filter says so (no clamping)
   DepthField peak = DepthField::FromFunction(16, 16, [](float u, float v) {
     const float x = u - 0.53f;
     const float y = v - 0.47f;
@@ -341,8 +342,8 @@ TEST_F(ReliefSafetyRadius, GrazingRaysKeepTheirHits)
 
 TEST_F(ReliefSafetyRadius, SamplesDoNotGrowWithResolution)
 {
-  // seed 002 s5: doubling the resolution doubles the radii, so the search takes about as
-  // many steps; ExactDDA's cost doubles
+  // Baboud and Decoret 2006, s5: doubling the resolution doubles the radii, so the search takes
+  // about as many steps; ExactDDA's cost doubles
   const auto smooth = [](float u, float v) {
     return 0.5f + 0.2f * std::sin(2.0f * float(Pi) * u) * std::cos(4.0f * float(Pi) * v);
   };

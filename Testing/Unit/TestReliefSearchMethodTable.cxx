@@ -54,7 +54,8 @@ TEST(ReliefSearchMethodTable, EveryMethodIsDescribedOnceAndFoundWhereItIsRead)
       << method->Name << ": no " << signature << " in the shader sources";
     EXPECT_NE(ReliefCpuMirror::FindSearch(method->Function), nullptr)
       << method->Name << ": the CPU mirror has no " << method->Function;
-    EXPECT_EQ(method->GetShaderDefine(), std::string("#define RELIEF_SEARCH ") + method->Function + "\n");
+    EXPECT_EQ(method->GetShaderDefine(),
+      std::string("#define RELIEF_SEARCH ") + method->Function + "\n");
     auto filter = vtk::TakeSmartPointer(
       method->NewAccelerationFilter ? method->NewAccelerationFilter() : nullptr);
     EXPECT_EQ(filter != nullptr, method->NeedsAcceleration()) << method->Name;

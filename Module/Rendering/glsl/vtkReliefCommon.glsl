@@ -16,8 +16,9 @@ struct ReliefRay
   vec3 origin;    // (u, v, depth) at t = 0
   vec3 direction; // change of (u, v, depth) from t = 0 to t = 1
   float bend;     // depth's t^2 term: 0 for a straight ray; below a curved surface's
-                  // quadric the depth of a straight view ray is quadratic (vtkReliefQuadric)
-  vec4 exact;     // the exact distance's terms (vtkReliefQuadric); w = 0: not used
+                  // quadric the depth of a straight view ray is quadratic
+                  // (vtkReliefQuadricFrame.glsl)
+  vec4 exact;     // the exact distance's terms (vtkReliefQuadricFrame.glsl); w = 0: not used
 };
 
 struct ReliefHit
@@ -87,7 +88,7 @@ ReliefRay reliefLightRay(vec3 hitPosition, vec3 lightDirection)
 }
 
 // A ray in texel coordinates, where texel (i, j)'s centre lies at (i, j): the cell
-// floor(x) is the bilinear patch between four texel centres (seed 002 s3.1).
+// floor(x) is the bilinear patch between four texel centres (Baboud and Decoret 2006, s3.1).
 struct ReliefGridRay
 {
   vec2 origin;    // texel coordinates at t = 0
@@ -132,14 +133,13 @@ vec2 reliefGridAt(ReliefGridRay grid, float t)
 //     of the reference surface that far along the view ray (zero for flat frames)
 // and, for the other stages, reliefFrameVertex() (vertex shader, after the position and
 // texture coordinates are written) and the macro reliefFrameGeometry(vertex) (geometry
-// shader, VTK's edges and wide lines: its unsized input arrays take loop indices only). The mapper defines RELIEF_VERTEX_STAGE,
-// RELIEF_GEOMETRY_STAGE or RELIEF_FRAGMENT_STAGE before a frame's file; the CPU mirror
-// defines none and compiles what holds no varyings.
+// shader, VTK's edges and wide lines: its unsized input arrays take loop indices only). The mapper
+// defines RELIEF_VERTEX_STAGE, RELIEF_GEOMETRY_STAGE or RELIEF_FRAGMENT_STAGE before a frame's
+// file; the CPU mirror defines none and compiles what holds no varyings.
 
 // What every frame knows of its fragment: the rasteriser's and the mapper's part.
 struct ReliefFragment
 {
-  vec3 positionVC;     // the polygon's point, view coordinates
   vec3 viewVC;         // unit direction from the eye through it
   vec2 tcoord;         // texture coordinates there: the view ray's entry (finite)
   vec2 tcoordAlongX;   // their change to the next pixel along screen x (dFdx)
@@ -149,7 +149,7 @@ struct ReliefFragment
   bool frontFacing;    // the side the mesh's winding faces is seen
   bool twoSided;       // back faces carry relief wherever they are drawn
   float depthScale;    // s_z: world depth of relief depth 1
-  float eyeDistance;   // from the eye to positionVC (1e30 in parallel projection)
+  float eyeDistance;   // from the eye to the polygon's point (1e30 in parallel projection)
 };
 
 // A view-space direction in texture-space units (du, dv, ddepth) of a flat frame with

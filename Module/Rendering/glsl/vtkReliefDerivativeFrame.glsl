@@ -1,4 +1,4 @@
-// vtkRelief: the derivative frame (Hoffman 2012, "Texture coordinate offset
+// vtkRelief: the derivative frame (Tichenor 2012, "Texture coordinate offset
 // calculations"), for vtkOpenGLDerivativeReliefMapper: a fragment's texture-space axes
 // from screen-space derivatives, for meshes without tangents; with RELIEF_VERTEX_NORMALS,
 // depth along the interpolated vertex normal. The frame interface is described in
@@ -41,7 +41,7 @@ struct ReliefAxes
 // The axes are the dual basis of (alongX, alongY, normal): dot(u, alongX) = uvAlongX.x,
 // dot(u, alongY) = uvAlongY.x and dot(u, normal) = 0, and alike for v. Along the face
 // this is the triangle's own affine texture mapping, exact for any skew of its texture
-// coordinates; seed 003 projects on normalized dFdx and dFdy instead, which holds only
+// coordinates; Tichenor (2012) projects on normalized dFdx and dFdy instead, which holds only
 // where they are perpendicular. A displacement along the normal leaves (u, v) unchanged:
 // with interpolated normals the texture axes turn with them, continuous across an edge
 // where its two faces share their vertex normals.

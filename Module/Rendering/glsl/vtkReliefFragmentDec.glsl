@@ -21,8 +21,7 @@ in vec2 reliefTCoordVSOutput;
 
 // Derivatives of the entry coordinates, taken once outside the search loops: every read
 // at a ray point uses the mipmap level they give, exactly the level textureGrad with
-// them would pick, computed once instead of at every read (a fifth of the frame time
-// on llvmpipe).
+// them would pick, computed once instead of at every read.
 vec2 reliefGradX;
 vec2 reliefGradY;
 float reliefLod;

@@ -9,7 +9,6 @@
   reliefGradY = dFdy(reliefEntryTCoord);
   reliefLod = reliefLevel(reliefTextureSize);
   ReliefFragment reliefFragment;
-  reliefFragment.positionVC = reliefPositionVSOutput;
   reliefFragment.viewVC =
     cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
   reliefFragment.tcoord = reliefEntryTCoord;

@@ -1,7 +1,7 @@
 // vtkRelief: the exact searches. They walk the ray over the cells of the bilinear height
-// field (the patches between texel centres, seed 002 s3.1) and intersect it with a
+// field (the patches between texel centres, Baboud and Decoret 2006, s3.1) and intersect it with a
 // cell's patch by solving a quadratic, so no feature is missed, however thin.
-// ExactDDA visits every cell the ray crosses (seed 002 s3.3, Amanatides and Woo);
+// ExactDDA visits every cell the ray crosses (Baboud and Decoret 2006, s3.3, Amanatides and Woo);
 // MaximumMipmap skips whole blocks of cells the ray passes over (Tevs, Ihrke and
 // Seidel 2008). Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules.
 // MaximumMipmap also needs RELIEF_PYRAMID_DEPTH(node, level): the least depth (highest
@@ -101,8 +101,8 @@ vec2 reliefCrossings(ReliefGridRay grid, vec2 bounds, vec2 signs, vec2 inverseRu
 }
 
 // Every cell the ray's projection crosses between tStart and tEnd, in order, each
-// intersected exactly (seed 002 s3.3 with the patch solved, not sampled): the first hit,
-// or a miss at tEnd. `samples` counts on from the caller's.
+// intersected exactly (Baboud and Decoret 2006, s3.3 with the patch solved, not sampled): the first
+// hit, or a miss at tEnd. `samples` counts on from the caller's.
 ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float tEnd, int samples)
 {
   vec2 signs = reliefStepSigns(grid);

@@ -1,17 +1,15 @@
-// vtkRelief: SafetyRadius, the robust binary search of seed 002 s3.4 (Baboud and Decoret
-// 2006). Cell c stores a radius n (vtkSafetyRadiusFilter): a ray on or above the field
-// at a point over c, once more than e below the field, is nowhere above it again before
-// it leaves the square of cells within n of c. So the search jumps from square exit to
-// square exit while the ray stays above. An exit found below brackets a crossing (the
-// only one when e = 0): bisection, reading the exact patch, narrows the bracket to a
-// few cells and an exact cell walk finishes it. Radius 0 promises nothing (seed 002 Fig. 7):
-// that cell alone is intersected exactly, and the search goes on from its exit. With
-// e = 0 the hit is exact; with e > 0 the search steps over the ray only where it is at
-// most e below the field, so it returns a true hit, at or after the first one and no
-// later than where the ray is first more than e below the field.
-// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
-// RELIEF_SAFETY_RADIUS(cell): the radius of a cell (unwrapped index; the includer
-// repeats it), in cells.
+// vtkRelief: SafetyRadius, the robust binary search of Baboud and Decoret 2006, s3.4 (Baboud and
+// Decoret 2006). Cell c stores a radius n (vtkSafetyRadiusFilter): a ray on or above the field at a
+// point over c, once more than e below the field, is nowhere above it again before it leaves the
+// square of cells within n of c. So the search jumps from square exit to square exit while the ray
+// stays above. An exit found below brackets a crossing (the only one when e = 0): bisection,
+// reading the exact patch, narrows the bracket to a few cells and an exact cell walk finishes it.
+// Radius 0 promises nothing (Baboud and Decoret 2006, Fig. 7): that cell alone is intersected
+// exactly, and the search goes on from its exit. With e = 0 the hit is exact; with e > 0 the search
+// steps over the ray only where it is at most e below the field, so it returns a true hit, at or
+// after the first one and no later than where the ray is first more than e below the field. Shared
+// with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs RELIEF_SAFETY_RADIUS(cell):
+// the radius of a cell (unwrapped index; the includer repeats it), in cells.
 
 #ifndef RELIEF_SAFETY_RADIUS
 // The GPU's radii, one texel per cell: read at the texel's centre with nearest filtering,
