@@ -9,6 +9,7 @@
 #include "vtkReliefSurfaceFilter.h"
 
 #include "vtkReliefDerivativeFrame.h"
+#include "vtkReliefFlatFrame.h"
 
 vtkStandardNewMacro(vtkOpenGLDerivativeReliefMapper);
 
@@ -78,7 +79,7 @@ void vtkOpenGLDerivativeReliefMapper::MapFrameAttributes(bool relief)
 
 std::string vtkOpenGLDerivativeReliefMapper::GetFrameSource()
 {
-  return vtkReliefDerivativeFrame;
+  return std::string(vtkReliefFlatFrame) + vtkReliefDerivativeFrame;
 }
 
 std::string vtkOpenGLDerivativeReliefMapper::GetFrameDefines()

@@ -32,6 +32,7 @@
 
 #include "vtkReliefCommon.h"
 #include "vtkReliefConeSearch.h"
+#include "vtkReliefFlatFrame.h"
 #include "vtkReliefFragmentDec.h"
 #include "vtkReliefFragmentImpl.h"
 #include "vtkReliefGeometryDec.h"
@@ -492,7 +493,7 @@ void vtkOpenGLReliefMapper::MapReliefAttribute(const char* shaderInput, const ch
 
 std::string vtkOpenGLReliefMapper::GetFrameSource()
 {
-  return std::string(vtkReliefTangentBasis) + vtkReliefTangentFrame;
+  return std::string(vtkReliefTangentBasis) + vtkReliefFlatFrame + vtkReliefTangentFrame;
 }
 
 std::string vtkOpenGLReliefMapper::GetFrameDefines()

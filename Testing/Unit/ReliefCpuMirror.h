@@ -134,6 +134,7 @@ inline namespace Tangent
 {
 namespace
 {
+#define RELIEF_MIRROR_FLAT_FRAME
 #define RELIEF_MIRROR_FRAME "vtkReliefTangentFrame.glsl"
 #include "ReliefCpuMirrorSources.h"
 }
@@ -163,6 +164,7 @@ namespace Derivative
 {
 namespace
 {
+#define RELIEF_MIRROR_FLAT_FRAME
 #define RELIEF_MIRROR_FRAME "vtkReliefDerivativeFrame.glsl"
 #include "ReliefCpuMirrorSources.h"
 }
@@ -173,6 +175,7 @@ namespace DerivativeNormals
 namespace
 {
 #define RELIEF_VERTEX_NORMALS
+#define RELIEF_MIRROR_FLAT_FRAME
 #define RELIEF_MIRROR_FRAME "vtkReliefDerivativeFrame.glsl"
 #include "ReliefCpuMirrorSources.h"
 #undef RELIEF_VERTEX_NORMALS

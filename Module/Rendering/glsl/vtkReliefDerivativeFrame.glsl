@@ -1,9 +1,10 @@
 // vtkRelief: the derivative frame (Tichenor 2012, "Texture coordinate offset
 // calculations"), for vtkOpenGLDerivativeReliefMapper: a fragment's texture-space axes
 // from screen-space derivatives, for meshes without tangents; with RELIEF_VERTEX_NORMALS,
-// depth along the interpolated vertex normal. The frame interface is described in
-// vtkReliefCommon.glsl; written in the GLSL subset GLM also compiles: the unit tests
-// check the axes on the CPU against triangles' exact texture mappings.
+// depth along the interpolated vertex normal; a flat frame (vtkReliefFlatFrame.glsl,
+// before this file). The frame interface is described in vtkReliefCommon.glsl; written in the GLSL
+// subset GLM also compiles: the unit tests check the axes on the CPU against triangles' exact
+// texture mappings.
 
 #if defined(RELIEF_VERTEX_STAGE)
 #ifdef RELIEF_VERTEX_NORMALS
@@ -76,14 +77,6 @@ vec3 reliefUnitOr(vec3 vector, vec3 fallback)
   return size > 0.0f && !isinf(size) && !isnan(size) ? vector / size : fallback;
 }
 
-struct ReliefFrame
-{
-  vec3 axisU;
-  vec3 axisV;
-  vec3 normal;
-  bool usable;
-};
-
 // The triangle's own mapping, from how position and texture coordinates change from
 // pixel to pixel; its normal faces the viewer. vertexNormal: the interpolated vertex
 // normal (read with RELIEF_VERTEX_NORMALS only).
@@ -107,33 +100,6 @@ ReliefFrame reliefDerivativeFrame(ReliefFragment fragment, vec3 vertexNormal)
   frame.axisV = axes.v;
   frame.usable = axes.usable;
   return frame;
-}
-
-bool reliefFrameHides(ReliefFrame frame, ReliefFragment fragment)
-{
-  return false;
-}
-
-ReliefRay reliefFrameViewRay(ReliefFrame frame, ReliefFragment fragment)
-{
-  return reliefViewRay(fragment.tcoord, reliefFlatDirection(fragment.viewVC, frame.axisU,
-    frame.axisV, frame.normal, fragment.depthScale));
-}
-
-bool reliefFrameRayLeft(ReliefFrame frame, ReliefRay ray, ReliefHit hit)
-{
-  return false;
-}
-
-float reliefFrameHitDistance(ReliefFrame frame, ReliefFragment fragment, ReliefRay ray,
-  ReliefHit hit)
-{
-  return reliefFlatHitDistance(fragment.viewVC, frame.normal, fragment.depthScale, hit);
-}
-
-vec3 reliefFrameSurfaceSlope(ReliefFrame frame, ReliefFragment fragment, float distance)
-{
-  return vec3(0.0f, 0.0f, 0.0f);
 }
 
 #if defined(RELIEF_FRAGMENT_STAGE)
