@@ -332,6 +332,7 @@ void vtkOpenGLReliefTextures::ReleaseGraphicsResources(vtkWindow* window)
 void vtkOpenGLReliefTextures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Owner: " << this->Owner << "\n";
   os << indent << "ReliefSize: " << this->ReliefSize[0] << "x" << this->ReliefSize[1] << "\n";
   os << indent << "InputNormals: " << this->InputNormals << "\n";
   os << indent << "DepthTextureBytes: " << this->DepthTextureBytes << "\n";
