@@ -123,6 +123,33 @@ def check_chart(path):
         fail(path + " is blank")
 
 
+def check_sharing(text):
+    """The printed table of many actors on one height map (the --report section): one
+    row for one actor and one for several, every figure a number, and the textures of
+    several at least those of one (they are not shared yet; when they are, equal)."""
+    if "Many actors on one" not in text:
+        fail("the bench printed no table of many actors")
+    section = text.split("Many actors on one", 1)[1]
+    rows = {}
+    for line in section.splitlines():
+        cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
+        if line.startswith("| ") and cells[0].isdigit():
+            rows[cells[0]] = cells
+    if "1" not in rows or "4" not in rows:
+        fail("the sharing table lacks the rows for 1 and 4 actors: %s" % sorted(rows))
+    for name in ("1", "4"):
+        figure(rows[name][1])
+        if not rows[name][2].endswith(" MiB"):
+            fail("process memory without its unit: " + rows[name][2])
+        figure(rows[name][2][:-len(" MiB")])
+        if figure(rows[name][3]) <= 0:
+            fail("a first frame that took no time: " + rows[name][3])
+    one = figure(rows["1"][1])
+    four = figure(rows["4"][1])
+    if one <= 0 or four < one:
+        fail("texture bytes of 1 and 4 actors make no sense: %s, %s" % (one, four))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--bench", required=True)
@@ -135,7 +162,7 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric,derivative",
+               "accuracy,sweeps,quadric,derivative,sharing",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -165,6 +192,7 @@ def main():
     check_derivative(text)
     for chart in CHARTS:
         check_chart(os.path.join(arguments.output, "images", chart))
+    check_sharing(run.stdout)
     print("bench smoke run: results and charts well formed")
 
 

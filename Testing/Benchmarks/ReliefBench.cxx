@@ -48,6 +48,8 @@
 #include <thread>
 #include <tuple>
 
+#include <unistd.h> // sysconf, for the resident memory
+
 namespace
 {
 struct Configuration
@@ -85,7 +87,7 @@ bool KnownSections(const std::string& list)
   {
     if (section != "plain" && section != "methods" && section != "filters" &&
       section != "accuracy" && section != "sweeps" && section != "quadric" &&
-      section != "derivative")
+      section != "derivative" && section != "sharing")
     {
       return false;
     }
@@ -196,6 +198,67 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
 // The acceleration filters' run times on the stones height map (targets: safety radii
 // and cone map of 512x512 in 5 s, the maximum mipmap of 1024x1024 in 0.2 s) and the
 // local quadrics' on a mesh of a million points, each the median of `rounds` runs.
+// Resident memory of this process in bytes (Linux's /proc/self/statm).
+double ResidentBytes()
+{
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0;
+  double resident = 0.0;
+  statm >> pages >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+// Many actors on one height map: each its own relief mapper of the same square and the
+// same height image, as a multiblock dataset or many instances would be. What the
+// mappers' textures take, what the process grows by, and the first frame (filters,
+// uploads and the shader's compilation), for one actor and for `many`.
+std::string SharingTable(int size, int many)
+{
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
+  resize->SetOutputDimensions(size, size, 1);
+  resize->Update();
+  vtkImageData* heights = resize->GetOutput();
+  auto square = ReliefScene::Square(1.0);
+  std::ostringstream table;
+  table << "| actors | texture bytes | process memory grown | first frame (s) |\n"
+        << "| ---: | ---: | ---: | ---: |\n";
+  for (int count : { 1, many })
+  {
+    vtkNew<vtkRenderWindow> window;
+    auto renderer = ReliefScene::LitRenderer(window, 400, 300);
+    std::vector<vtkSmartPointer<vtkOpenGLReliefMapper>> mappers;
+    for (int k = 0; k < count; ++k)
+    {
+      auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+      mapper->SetInputData(square);
+      mapper->SetHeightMapData(heights);
+      mapper->SetDepthScale(0.02);
+      auto actor = ReliefScene::ReliefActor(mapper, "");
+      actor->SetPosition(1.1 * (k % 10), 1.1 * (k / 10), 0.0);
+      renderer->AddActor(actor);
+      mappers.push_back(mapper);
+    }
+    renderer->ResetCamera();
+    const double before = ResidentBytes();
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double grown = ResidentBytes() - before;
+    vtkIdType bytes = 0;
+    for (vtkOpenGLReliefMapper* mapper : mappers)
+    {
+      bytes += mapper->GetTextureBytes();
+    }
+    table << "| " << count << " | " << bytes << " | " << std::fixed << std::setprecision(1)
+          << grown / (1024.0 * 1024.0) << " MiB | " << std::setprecision(3) << seconds
+          << " |\n";
+    table.unsetf(std::ios::fixed);
+  }
+  return table.str();
+}
+
 std::string FiltersTable(int rounds)
 {
   vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
@@ -315,7 +378,8 @@ int main(int argc, char* argv[])
       }
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
-                   "                      filters, accuracy, sweeps, quadric, derivative)\n"
+                   "                      filters, accuracy, sweeps, quadric, derivative,\n"
+                   "                      sharing)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
@@ -404,6 +468,10 @@ int main(int argc, char* argv[])
         std::max(3, frames / 4), rounds)
     : "(not run)\n";
   const std::string filtersTable = wanted("filters") ? FiltersTable(rounds) : "(not run)\n";
+  const int sharedSize = quick ? 64 : 1024;
+  const int sharingActors = quick ? 4 : 100;
+  const std::string sharingTable =
+    wanted("sharing") ? SharingTable(sharedSize, sharingActors) : "(not run)\n";
   ReliefAccuracy::Options accuracy;
   accuracy.Method = method;
   accuracy.Frames = std::max(1, frames / 2); // per round, two rounds
@@ -549,9 +617,16 @@ int main(int argc, char* argv[])
                                      "vtkSMPTools backend " +
     std::string(vtkSMPTools::GetBackend()) + ", " +
     std::to_string(vtkSMPTools::GetEstimatedNumberOfThreads()) + " threads.\n\n";
+  const std::string sharingContext = "Many actors on one " + std::to_string(sharedSize) + "x" +
+    std::to_string(sharedSize) +
+    " height map: each actor its own relief mapper of the same\n"
+    "square and the same height image; the texture bytes all mappers hold, what the\n"
+    "process grows by in the first frame, and that frame's time (filters, uploads, the\n"
+    "shader's compilation).\n\n";
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
-            << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection;
+            << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection << "\n"
+            << sharingContext << sharingTable;
 
   if (!report.empty())
   {
@@ -560,7 +635,8 @@ int main(int argc, char* argv[])
         << "Produced by `./relief bench --report " << report << "`.\n\n"
         << context.str() << "\n" << table.str() << "\n## Search methods\n\n"
         << methodsContext << methodsTable << "\n## Acceleration filters\n\n" << filtersContext
-        << filtersTable;
+        << filtersTable << "\n## Many actors on one height map\n\n" << sharingContext
+        << sharingTable;
     std::cout << "written to " << report << "\n";
   }
   if (!results.empty())
