@@ -21,8 +21,8 @@
  * safe (valley floors, at e = 0). Radius 0 promises nothing: the search intersects that cell
  * exactly. It is the right value wherever a ray can graze the field and come out again next to the
  * cell (hill tops, ridges, saddles: Baboud and Decoret 2006, Fig. 7), which at e = 0 is most cells
- * of a curved field, since any convexity lets a grazing ray dip in and out; it is never clamped to
- * 1.
+ * of a curved field, since any convexity lets a grazing ray dip in and out; it is never
+ * clamped to 1.
  *
  * Error bound. With e > 0 the radii are larger, and a search that trusts them can step
  * over a stretch where the ray is below the field, but only where it is at most e below.

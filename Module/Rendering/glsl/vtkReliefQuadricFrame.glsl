@@ -16,10 +16,11 @@
 //
 // The exact distance (Eq. 5-6, compiled with RELIEF_EXACT_DISTANCE) measures from P
 // along U, the unit vector perpendicular to V in the plane of V and the normal, to the
-// quadric: s solves a (P.x + U.x s)^2 + b (P.y + U.y s)^2 = P.z + U.z s. Oliveira and Policarpo
-// (2005) use it where both principal curvatures bend away from the viewer (here a, b < 0), and Eq.
-// 7 elsewhere: where both bend toward the viewer (bowls), where the Gaussian curvature is negative
-// or zero (saddles, cylinders, planes), and when V is the normal (U undefined).
+// quadric: s solves a (P.x + U.x s)^2 + b (P.y + U.y s)^2 = P.z + U.z s. Oliveira and
+// Policarpo (2005) use it where both principal curvatures bend away from the viewer (here
+// a, b < 0), and Eq. 7 elsewhere: where both bend toward the viewer (bowls), where the
+// Gaussian curvature is negative or zero (saddles, cylinders, planes), and when V is the
+// normal (U undefined).
 
 // A vertex's quadric (a, b) in view units, from vtkLocalQuadricFilter's in model units:
 // curvature is 1 / length, so an actor's scale k turns a into a / k; NaN is a plane.
