@@ -1,7 +1,7 @@
 // torus.obj without its normals: points and texture coordinates only, as many PLY scans
 // and STL exports come. The derivative frame is each face's own (flat shading), and the
-// texture tears at the edges, a little at this mesh's creases of 11 and 22 degrees (seed
-// 003's limit, measured in Documentation/results.md); no normals are computed.
+// texture tears at the edges, a little at this mesh's creases of 11 and 22 degrees
+// (Tichenor's 2012 limit, measured in Documentation/results.md); no normals are computed.
 #include "ReliefScene.h"
 
 #include "vtkNew.h"
