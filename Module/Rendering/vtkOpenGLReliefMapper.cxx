@@ -438,8 +438,8 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
     this->GetInputAlgorithm(2, 0)->Update();
   }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (this->Textures->UpdateAcceleration(window, method, this->ReliefTextureFilter->GetOutput(), this->GetAcceleration(),
-        this->SafetyRadiusTolerance))
+  if (this->Textures->UpdateAcceleration(window, method, this->ReliefTextureFilter->GetOutput(),
+        this->GetAcceleration(), this->SafetyRadiusTolerance))
   {
     this->SetActiveSearchMethod(this->SearchMethod);
     return;

@@ -97,6 +97,11 @@ vtkOpenGLReliefTextures::~vtkOpenGLReliefTextures() = default;
 bool vtkOpenGLReliefTextures::UploadRelief(
   vtkOpenGLRenderWindow* window, vtkImageData* relief, bool inputNormals)
 {
+  // uploaded already: nothing to ask of GL, every frame
+  if (this->DepthTexture->GetHandle() != 0 && this->ReliefUploadTime > relief->GetMTime())
+  {
+    return true;
+  }
   int dimensions[3];
   relief->GetDimensions(dimensions);
   const int limit = vtkTextureObject::GetMaximumTextureSize(window);
@@ -106,16 +111,12 @@ bool vtkOpenGLReliefTextures::UploadRelief(
     {
       this->OversizeReportTime.Modified(); // said once per height map
       vtkObject* reporter = this->GetReporter();
-      vtkErrorWithObjectMacro(reporter, "The height map is " << dimensions[0] << "x" << dimensions[1]
-                                         << " texels; this OpenGL takes textures of at most "
-                                         << limit << "x" << limit
-                                         << ". Resample it (vtkImageResize) to fit.");
+      vtkErrorWithObjectMacro(reporter,
+        "The height map is " << dimensions[0] << "x" << dimensions[1]
+                             << " texels; this OpenGL takes textures of at most " << limit << "x"
+                             << limit << ". Resample it (vtkImageResize) to fit.");
     }
     return false;
-  }
-  if (this->DepthTexture->GetHandle() != 0 && this->ReliefUploadTime > relief->GetMTime())
-  {
-    return true;
   }
 
   // One 16-bit depth texture serves the searches and the shading, which rebuilds the
@@ -155,8 +156,9 @@ bool vtkOpenGLReliefTextures::UploadRelief(
   if (!uploaded)
   {
     vtkObject* reporter = this->GetReporter();
-    vtkErrorWithObjectMacro(reporter, "Could not upload the " << dimensions[0] << "x" << dimensions[1]
-                                          << " relief texture to the GPU.");
+    vtkErrorWithObjectMacro(reporter,
+      "Could not upload the " << dimensions[0] << "x" << dimensions[1]
+                              << " relief texture to the GPU.");
     return false;
   }
   this->InputNormals = inputNormals;
@@ -257,7 +259,8 @@ bool vtkOpenGLReliefTextures::UploadAcceleration(vtkOpenGLRenderWindow* window,
         internalFormat, false))
   {
     vtkObject* reporter = this->GetReporter();
-    vtkErrorWithObjectMacro(reporter, "Could not upload the " << method.Name << " acceleration image to the GPU.");
+    vtkErrorWithObjectMacro(
+      reporter, "Could not upload the " << method.Name << " acceleration image to the GPU.");
     return false;
   }
   this->AccelerationTextureBytes = values->GetNumberOfValues() * values->GetDataTypeSize();

@@ -94,7 +94,8 @@ ReliefHit reliefViewHit;
 // A view-space direction in texture-space units (du, dv, ddepth); depth grows inward.
 vec3 reliefToTexture(vec3 directionVC)
 {
-  return reliefFlatDirection(directionVC, reliefAxisU, reliefAxisV, reliefFrameN, reliefDepthScale);
+  return reliefFlatDirection(
+    directionVC, reliefAxisU, reliefAxisV, reliefFrameN, reliefDepthScale);
 }
 
 // Visibility (0 or 1) of a light seen from the hit, toLightVC pointing to the light.
