@@ -375,28 +375,13 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   }
   this->WarnedMissingHeightMap = false;
 
-  // A failed (empty) output would make the pipeline run the filter, and repeat its
-  // error, every frame: run it only when the heights or its settings change.
+  // The mapper's own filter holds the settings, and its output port serves filters
+  // downstream; what is drawn is made once for all mappers of these heights and settings.
   this->ReliefTextureFilter->SetInputData(heights);
-  const vtkMTimeType inputTime =
-    std::max(heights->GetMTime(), this->ReliefTextureFilter->GetMTime());
-  if (inputTime != this->ReliefTextureInputTime)
-  {
-    this->ReliefTextureInputTime = inputTime;
-    this->ReliefTextureFilter->Update();
-  }
-  vtkImageData* relief = this->ReliefTextureFilter->GetOutput();
-  vtkDataArray* texels = relief->GetPointData()->GetScalars();
-  if (!texels || relief->GetNumberOfPoints() == 0)
-  {
-    return false; // the filter has said why
-  }
-
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!this->Textures->UploadRelief(
-        window, relief, this->ReliefTextureFilter->GetUseInputNormals()))
+  if (!this->Textures->UpdateRelief(window, heights, this->ReliefTextureFilter))
   {
-    return false;
+    return false; // said why, once
   }
   if (this->Textures->GetInputNormals() != this->InputNormals)
   {
@@ -428,18 +413,14 @@ void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
     this->SetActiveSearchMethod(LINEAR_BINARY);
     return;
   }
-  if (!method.NeedsAcceleration())
-  {
-    this->SetActiveSearchMethod(this->SearchMethod);
-    return;
-  }
-  if (this->GetNumberOfInputConnections(2) > 0)
+  if (method.NeedsAcceleration() && this->GetNumberOfInputConnections(2) > 0)
   {
     this->GetInputAlgorithm(2, 0)->Update();
   }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (this->Textures->UpdateAcceleration(window, method, this->ReliefTextureFilter->GetOutput(),
-        this->GetAcceleration(), this->SafetyRadiusTolerance))
+  if (this->Textures->UpdateAcceleration(window, method,
+        method.NeedsAcceleration() ? this->GetAcceleration() : nullptr,
+        this->SafetyRadiusTolerance))
   {
     this->SetActiveSearchMethod(this->SearchMethod);
     return;
@@ -906,6 +887,11 @@ void vtkOpenGLReliefMapper::SetCameraShaderParameters(
 vtkIdType vtkOpenGLReliefMapper::GetTextureBytes()
 {
   return this->Textures->GetTextureBytes(this->GetActiveSearch());
+}
+
+vtkIdType vtkOpenGLReliefMapper::GetTextureBytesInUse(vtkRenderWindow* window)
+{
+  return vtkOpenGLReliefTextures::GetTextureBytesInUse(window);
 }
 
 //------------------------------------------------------------------------------

@@ -29,7 +29,10 @@
  * normal from it by central differences, so the surface lit is the surface searched. A
  * normal map given with the heights (the filter's UseInputNormals) adds its (nx, ny) in
  * 16 bits. ConeStep's cone map takes two bytes a cell (vtkConeStepMapFilter::EncodeCone),
- * the other acceleration images floats. GetTextureBytes() reports the total.
+ * the other acceleration images floats. GetTextureBytes() reports the total. Mappers of
+ * one window whose height map is the same data share its textures, each made and
+ * uploaded once and released with the last mapper that draws it: a multiblock dataset or
+ * many actors of one relief cost one copy (GetTextureBytesInUse()).
  */
 #ifndef vtkOpenGLReliefMapper_h
 #define vtkOpenGLReliefMapper_h
@@ -45,6 +48,7 @@
 class vtkImageData;
 class vtkOpenGLReliefTextures;
 class vtkReliefAccelerationFilter;
+class vtkRenderWindow;
 class vtkReliefSearchMethod;
 class vtkReliefTangentFrameFilter;
 class vtkReliefTextureFilter;
@@ -225,7 +229,13 @@ public:
   vtkImageData* GetHeightMap();
   ///@}
 
-  /// The filter that turns the height map into the relief texture, to configure it.
+  /**
+   * The filter that turns the height map into the relief texture, to configure it. Its
+   * settings decide what is drawn; what is drawn is a copy the mapper shares with all
+   * mappers of the same height map and settings in its window. Its output port, fed the
+   * height map at each render, serves filters downstream (an acceleration filter) and
+   * gives the relief texture to whoever calls its Update().
+   */
   vtkReliefTextureFilter* GetReliefTextureFilter();
 
   /// The mesh as rendered: triangulated, with normals, tangents and texture scale.
@@ -236,8 +246,17 @@ public:
    * the 16-bit depth texture with its mipmaps, an input normal map's texture if the
    * relief texture filter uses one (UseInputNormals), and the active search method's
    * acceleration image. 0 before the first render and after ReleaseGraphicsResources().
+   * Mappers drawing in one window share these textures when their height map is the
+   * same data (and acceleration image, or method and setting) with the same relief
+   * texture settings: each reports the shared bytes.
    */
   vtkIdType GetTextureBytes();
+
+  /**
+   * GPU memory all the relief mappers' textures in `window` take, in bytes, each texture
+   * shared by several mappers counted once.
+   */
+  static vtkIdType GetTextureBytesInUse(vtkRenderWindow* window);
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -344,7 +363,6 @@ protected:
   int ActiveSearchMethod = LINEAR_BINARY; // SearchMethod, or its fallback
   bool WarnedAccelerationFallback = false;
   bool WarnedUnsupportedSearchMethod = false;
-  vtkMTimeType ReliefTextureInputTime = 0; // heights and filter as last run
   vtkTimeStamp ShaderOptionsTime; // the search, frame, input normals or relief on/off changed
   vtkMTimeType ShaderOptionsMTime = 0; // the modification time a relief option last gave
   vtkMTimeType OtherChangesMTime = 0;  // the last before it that was of another kind

@@ -1,9 +1,11 @@
 #include "vtkOpenGLReliefTextures.h"
 
+#include "vtkCommand.h"
 #include "vtkConeStepMapFilter.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -13,13 +15,17 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedShortArray.h"
+#include "vtkWindow.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 vtkStandardNewMacro(vtkOpenGLReliefTextures);
 
@@ -87,6 +93,88 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
   });
   return codes;
 }
+
+// Runs `algorithm` with its errors and warnings the reporter's: a shared texture is made
+// once, by whichever helper asks for it first.
+void UpdateReportingTo(vtkAlgorithm* algorithm, vtkObject* reporter)
+{
+  vtkReliefForwardMessages(algorithm, reporter);
+  algorithm->Update();
+  algorithm->RemoveObservers(vtkCommand::ErrorEvent);
+  algorithm->RemoveObservers(vtkCommand::WarningEvent);
+}
+
+// Registries of what helpers share, keyed by what makes it; the helpers own the entries.
+template <typename Registry>
+void ForgetReleased(Registry& registry)
+{
+  for (auto entry = registry.begin(); entry != registry.end();)
+  {
+    entry = entry->second.expired() ? registry.erase(entry) : std::next(entry);
+  }
+}
+
+}
+
+// One relief texture: its window, the height map (held, so its address stays its own),
+// its modification time and the four settings of vtkReliefTextureFilter.
+using ReliefKey = std::tuple<vtkWindow*, vtkImageData*, vtkMTimeType, int, int, double, bool>;
+// One acceleration image of a relief: the method, its setting, and the precomputed image
+// with its modification time when one is given.
+using AccelerationKey = std::tuple<const vtkOpenGLReliefTextures::SharedRelief*, int, double,
+  vtkImageData*, vtkMTimeType>;
+
+struct vtkOpenGLReliefTextures::SharedRelief
+{
+  vtkWindow* Window = nullptr;
+  vtkNew<vtkReliefTextureFilter> Filter;  // its output is the relief texture
+  vtkNew<vtkTextureObject> DepthTexture;  // 16-bit depth: searched, and shaded from
+  vtkNew<vtkTextureObject> NormalTexture; // (nx, ny) of an input normal map, if one is used
+  bool InputNormals = false;              // NormalTexture holds the normals the shading reads
+  bool Failed = false; // not drawable, and said why: the helpers asking later say nothing
+  int Size[2] = { 0, 0 };
+  vtkIdType DepthBytes = 0;
+  vtkIdType NormalBytes = 0;
+
+  vtkImageData* GetRelief() { return this->Filter->GetOutput(); }
+  // Zero when the window released the textures, as it does when it closes
+  vtkIdType GetBytes() const
+  {
+    return this->DepthTexture->GetHandle() != 0 ? this->DepthBytes + this->NormalBytes : 0;
+  }
+  bool Upload(vtkOpenGLRenderWindow* window, vtkObject* reporter);
+};
+
+struct vtkOpenGLReliefTextures::SharedAcceleration
+{
+  std::shared_ptr<SharedRelief> Relief; // made of it
+  vtkSmartPointer<vtkReliefAccelerationFilter> Filter; // when built here
+  vtkSmartPointer<vtkImageData> Image;  // the filter's output, or the precomputed image
+  vtkNew<vtkTextureObject> Texture;     // what the search method reads besides the depths
+  bool Failed = false;
+  vtkIdType Bytes = 0;
+
+  vtkIdType GetBytes() const { return this->Texture->GetHandle() != 0 ? this->Bytes : 0; }
+  bool Check(const vtkReliefSearchMethod& method, vtkObject* reporter);
+  bool Upload(
+    vtkOpenGLRenderWindow* window, const vtkReliefSearchMethod& method, vtkObject* reporter);
+};
+
+namespace
+{
+std::map<ReliefKey, std::weak_ptr<vtkOpenGLReliefTextures::SharedRelief>>& SharedReliefs()
+{
+  static std::map<ReliefKey, std::weak_ptr<vtkOpenGLReliefTextures::SharedRelief>> registry;
+  return registry;
+}
+
+std::map<AccelerationKey, std::weak_ptr<vtkOpenGLReliefTextures::SharedAcceleration>>&
+SharedAccelerations()
+{
+  static std::map<AccelerationKey, std::weak_ptr<vtkOpenGLReliefTextures::SharedAcceleration>>
+    registry;
+  return registry;
+}
 }
 
 vtkOpenGLReliefTextures::vtkOpenGLReliefTextures() = default;
@@ -94,28 +182,56 @@ vtkOpenGLReliefTextures::vtkOpenGLReliefTextures() = default;
 vtkOpenGLReliefTextures::~vtkOpenGLReliefTextures() = default;
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLReliefTextures::UploadRelief(
-  vtkOpenGLRenderWindow* window, vtkImageData* relief, bool inputNormals)
+vtkImageData* vtkOpenGLReliefTextures::UpdateRelief(
+  vtkOpenGLRenderWindow* window, vtkImageData* heights, vtkReliefTextureFilter* settings)
 {
-  // uploaded already: nothing to ask of GL, every frame
-  if (this->DepthTexture->GetHandle() != 0 && this->ReliefUploadTime > relief->GetMTime())
+  const ReliefKey key{ window, heights, heights->GetMTime(), settings->GetInputConvention(),
+    settings->GetComponent(), settings->GetDepthToTexelRatio(),
+    settings->GetUseInputNormals() != 0 };
+  auto& registry = SharedReliefs();
+  ForgetReleased(registry);
+  std::shared_ptr<SharedRelief> shared = registry[key].lock();
+  if (!shared)
   {
-    return true;
+    shared = std::make_shared<SharedRelief>();
+    shared->Window = window;
+    shared->Filter->SetInputConvention(std::get<3>(key));
+    shared->Filter->SetComponent(std::get<4>(key));
+    shared->Filter->SetDepthToTexelRatio(std::get<5>(key));
+    shared->Filter->SetUseInputNormals(std::get<6>(key));
+    shared->InputNormals = std::get<6>(key);
+    shared->Filter->SetInputData(heights);
+    UpdateReportingTo(shared->Filter, this->GetReporter());
+    vtkImageData* relief = shared->GetRelief();
+    shared->Failed = !relief->GetPointData()->GetScalars() || relief->GetNumberOfPoints() == 0;
+    registry[key] = shared;
   }
+  if (this->Acceleration && this->Acceleration->Relief != shared)
+  {
+    this->Acceleration.reset(); // of the relief before: released if it was the last user
+  }
+  this->Relief = shared;
+  // uploaded once; again only if the window released it
+  if (!shared->Failed && shared->DepthTexture->GetHandle() == 0)
+  {
+    shared->Failed = !shared->Upload(window, this->GetReporter());
+  }
+  return shared->Failed ? nullptr : shared->GetRelief();
+}
+
+bool vtkOpenGLReliefTextures::SharedRelief::Upload(
+  vtkOpenGLRenderWindow* window, vtkObject* reporter)
+{
+  vtkImageData* relief = this->GetRelief();
   int dimensions[3];
   relief->GetDimensions(dimensions);
   const int limit = vtkTextureObject::GetMaximumTextureSize(window);
   if (dimensions[0] > limit || dimensions[1] > limit)
   {
-    if (this->OversizeReportTime <= relief->GetMTime())
-    {
-      this->OversizeReportTime.Modified(); // said once per height map
-      vtkObject* reporter = this->GetReporter();
-      vtkErrorWithObjectMacro(reporter,
-        "The height map is " << dimensions[0] << "x" << dimensions[1]
-                             << " texels; this OpenGL takes textures of at most " << limit << "x"
-                             << limit << ". Resample it (vtkImageResize) to fit.");
-    }
+    vtkErrorWithObjectMacro(reporter,
+      "The height map is " << dimensions[0] << "x" << dimensions[1]
+                           << " texels; this OpenGL takes textures of at most " << limit << "x"
+                           << limit << ". Resample it (vtkImageResize) to fit.");
     return false;
   }
 
@@ -133,9 +249,9 @@ bool vtkOpenGLReliefTextures::UploadRelief(
       texels->GetComponent(texel, 3) * vtkReliefTextureFilter::DEPTH_LEVELS)));
   }
   bool uploaded = UploadTexture(this->DepthTexture, window, dimensions, depths, GL_R16, true);
-  this->DepthTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 2);
-  this->NormalTextureBytes = 0;
-  if (inputNormals)
+  this->DepthBytes = MipmappedBytes(dimensions[0], dimensions[1], 2);
+  this->NormalBytes = 0;
+  if (this->InputNormals)
   {
     vtkNew<vtkFloatArray> normals;
     normals->SetNumberOfComponents(2);
@@ -147,90 +263,90 @@ bool vtkOpenGLReliefTextures::UploadRelief(
     }
     uploaded = uploaded &&
       UploadTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM, true);
-    this->NormalTextureBytes = MipmappedBytes(dimensions[0], dimensions[1], 4);
-  }
-  else
-  {
-    this->NormalTexture->ReleaseGraphicsResources(window);
+    this->NormalBytes = MipmappedBytes(dimensions[0], dimensions[1], 4);
   }
   if (!uploaded)
   {
-    vtkObject* reporter = this->GetReporter();
     vtkErrorWithObjectMacro(reporter,
       "Could not upload the " << dimensions[0] << "x" << dimensions[1]
                               << " relief texture to the GPU.");
+    this->DepthTexture->ReleaseGraphicsResources(window);
+    this->NormalTexture->ReleaseGraphicsResources(window);
     return false;
   }
-  this->InputNormals = inputNormals;
-  this->ReliefSize[0] = dimensions[0];
-  this->ReliefSize[1] = dimensions[1];
-  this->ReliefUploadTime.Modified();
+  this->Size[0] = dimensions[0];
+  this->Size[1] = dimensions[1];
   return true;
+}
+
+bool vtkOpenGLReliefTextures::GetInputNormals() const
+{
+  return this->Relief && this->Relief->InputNormals;
 }
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLReliefTextures::UpdateAcceleration(vtkOpenGLRenderWindow* window,
-  const vtkReliefSearchMethod& method, vtkImageData* relief, vtkImageData* precomputed,
-  double safetyRadiusTolerance)
+  const vtkReliefSearchMethod& method, vtkImageData* precomputed, double safetyRadiusTolerance)
 {
-  vtkImageData* acceleration =
-    precomputed ? precomputed : this->BuildAcceleration(method, relief, safetyRadiusTolerance);
-  const bool current = acceleration && acceleration == this->UploadedAcceleration &&
-    this->AccelerationMethod == method.Id &&
-    this->AccelerationUploadTime > acceleration->GetMTime() &&
-    this->AccelerationUploadTime > this->ReliefUploadTime;
-  if (!current)
+  if (!method.NeedsAcceleration() || !this->Relief || this->Relief->Failed)
   {
-    // checked and uploaded once per change: any message is given once
-    this->UploadedAcceleration = acceleration;
-    this->AccelerationMethod = method.Id;
-    this->AccelerationUploadTime.Modified();
-    this->AccelerationUsable = acceleration &&
-      this->CheckAcceleration(method, relief, acceleration) &&
-      this->UploadAcceleration(window, method, acceleration);
+    this->Acceleration.reset(); // none read: released if this was the last user
+    return !method.NeedsAcceleration();
   }
-  return this->AccelerationUsable;
+  // the setting counts only where the method's own filter reads it
+  const double setting = precomputed || !method.ConfigureFilter ? 0.0 : safetyRadiusTolerance;
+  const AccelerationKey key{ this->Relief.get(), method.Id, setting, precomputed,
+    precomputed ? precomputed->GetMTime() : 0 };
+  auto& registry = SharedAccelerations();
+  ForgetReleased(registry);
+  std::shared_ptr<SharedAcceleration> shared = registry[key].lock();
+  if (!shared)
+  {
+    shared = std::make_shared<SharedAcceleration>();
+    shared->Relief = this->Relief;
+    shared->Image = precomputed;
+    if (!precomputed)
+    {
+      // only the image the chosen method reads, built once per relief and setting
+      shared->Filter = vtk::TakeSmartPointer(method.NewAccelerationFilter());
+      if (method.ConfigureFilter)
+      {
+        method.ConfigureFilter(shared->Filter, setting);
+      }
+      shared->Filter->SetInputData(this->Relief->GetRelief());
+      UpdateReportingTo(shared->Filter, this->GetReporter());
+      shared->Image = shared->Filter->GetOutput();
+    }
+    shared->Failed = precomputed && !shared->Check(method, this->GetReporter());
+    registry[key] = shared;
+  }
+  this->Acceleration = shared;
+  if (!shared->Failed && shared->Texture->GetHandle() == 0)
+  {
+    shared->Failed = !shared->Upload(window, method, this->GetReporter());
+  }
+  return !shared->Failed;
 }
 
-vtkImageData* vtkOpenGLReliefTextures::BuildAcceleration(
-  const vtkReliefSearchMethod& method, vtkImageData* relief, double safetyRadiusTolerance)
-{
-  // only the image the chosen method reads, rebuilt only when its input or settings change
-  if (!this->AccelerationFilter || this->AccelerationFilterMethod != method.Id)
-  {
-    this->AccelerationFilter = vtk::TakeSmartPointer(method.NewAccelerationFilter());
-    this->AccelerationFilterMethod = method.Id;
-    vtkReliefForwardMessages(this->AccelerationFilter, this->GetReporter());
-  }
-  if (method.ConfigureFilter)
-  {
-    method.ConfigureFilter(this->AccelerationFilter, safetyRadiusTolerance);
-  }
-  this->AccelerationFilter->SetInputData(relief);
-  this->AccelerationFilter->Update();
-  return this->AccelerationFilter->GetOutput();
-}
-
-bool vtkOpenGLReliefTextures::CheckAcceleration(
-  const vtkReliefSearchMethod& method, vtkImageData* relief, vtkImageData* acceleration)
+bool vtkOpenGLReliefTextures::SharedAcceleration::Check(
+  const vtkReliefSearchMethod& method, vtkObject* reporter)
 {
   int reliefSize[3];
-  relief->GetDimensions(reliefSize);
+  this->Relief->GetRelief()->GetDimensions(reliefSize);
   // what the method's own filter would make of this height map
   auto producer = vtk::TakeSmartPointer(method.NewAccelerationFilter());
   int expected[2];
   producer->GetOutputSize(reliefSize[0], reliefSize[1], expected);
   const int components = producer->GetOutputComponents();
   int dimensions[3];
-  acceleration->GetDimensions(dimensions);
-  vtkDataArray* values = acceleration->GetPointData()->GetScalars();
+  this->Image->GetDimensions(dimensions);
+  vtkDataArray* values = this->Image->GetPointData()->GetScalars();
   if (values && values->GetDataType() == VTK_FLOAT &&
     values->GetNumberOfComponents() == components && dimensions[0] == expected[0] &&
     dimensions[1] == expected[1] && dimensions[2] == 1)
   {
     return true;
   }
-  vtkObject* reporter = this->GetReporter();
   vtkErrorWithObjectMacro(reporter, "The acceleration image is "
     << dimensions[0] << "x" << dimensions[1] << "x" << dimensions[2] << " with "
     << (values ? values->GetNumberOfComponents() : 0) << " component(s) of "
@@ -242,42 +358,45 @@ bool vtkOpenGLReliefTextures::CheckAcceleration(
   return false;
 }
 
-bool vtkOpenGLReliefTextures::UploadAcceleration(vtkOpenGLRenderWindow* window,
-  const vtkReliefSearchMethod& method, vtkImageData* acceleration)
+bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
+  vtkOpenGLRenderWindow* window, const vtkReliefSearchMethod& method, vtkObject* reporter)
 {
-  this->AccelerationTextureBytes = 0;
-  vtkSmartPointer<vtkDataArray> values = acceleration->GetPointData()->GetScalars();
+  vtkSmartPointer<vtkDataArray> values = this->Image->GetPointData()->GetScalars();
+  if (!values)
+  {
+    return false; // its filter has said why
+  }
   const bool cones = method.Encoding == vtkReliefSearchMethod::CONE_BYTES;
   if (cones)
   {
-    values = EncodeConeMap(acceleration); // rounded conservatively
+    values = EncodeConeMap(this->Image); // rounded conservatively
   }
   const unsigned int internalFormat = cones ? GL_RG8
     : values->GetNumberOfComponents() == 1  ? GL_R32F
                                             : GL_RG32F;
-  if (!UploadTexture(this->AccelerationTexture, window, acceleration->GetDimensions(), values,
-        internalFormat, false))
+  if (!UploadTexture(
+        this->Texture, window, this->Image->GetDimensions(), values, internalFormat, false))
   {
-    vtkObject* reporter = this->GetReporter();
     vtkErrorWithObjectMacro(
       reporter, "Could not upload the " << method.Name << " acceleration image to the GPU.");
+    this->Texture->ReleaseGraphicsResources(window);
     return false;
   }
-  this->AccelerationTextureBytes = values->GetNumberOfValues() * values->GetDataTypeSize();
+  this->Bytes = values->GetNumberOfValues() * values->GetDataTypeSize();
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefTextures::Activate(const vtkReliefSearchMethod& method)
 {
-  this->DepthTexture->Activate();
-  if (this->InputNormals)
+  this->Relief->DepthTexture->Activate();
+  if (this->Relief->InputNormals)
   {
-    this->NormalTexture->Activate();
+    this->Relief->NormalTexture->Activate();
   }
   if (method.NeedsAcceleration())
   {
-    this->AccelerationTexture->Activate();
+    this->Acceleration->Texture->Activate();
   }
 }
 
@@ -285,61 +404,90 @@ void vtkOpenGLReliefTextures::Deactivate(const vtkReliefSearchMethod& method)
 {
   if (method.NeedsAcceleration())
   {
-    this->AccelerationTexture->Deactivate();
+    this->Acceleration->Texture->Deactivate();
   }
-  if (this->InputNormals)
+  if (this->Relief->InputNormals)
   {
-    this->NormalTexture->Deactivate();
+    this->Relief->NormalTexture->Deactivate();
   }
-  this->DepthTexture->Deactivate();
+  this->Relief->DepthTexture->Deactivate();
 }
 
 void vtkOpenGLReliefTextures::SetShaderParameters(
   vtkShaderProgram* program, const vtkReliefSearchMethod& method)
 {
-  program->SetUniformi("reliefDepthTexture", this->DepthTexture->GetTextureUnit());
-  const float textureSize[2] = { static_cast<float>(this->DepthTexture->GetWidth()),
-    static_cast<float>(this->DepthTexture->GetHeight()) };
+  vtkTextureObject* depths = this->Relief->DepthTexture;
+  program->SetUniformi("reliefDepthTexture", depths->GetTextureUnit());
+  const float textureSize[2] = { static_cast<float>(depths->GetWidth()),
+    static_cast<float>(depths->GetHeight()) };
   program->SetUniform2f("reliefTextureSize", textureSize);
-  if (this->InputNormals)
+  if (this->Relief->InputNormals)
   {
-    program->SetUniformi("reliefNormalTexture", this->NormalTexture->GetTextureUnit());
+    program->SetUniformi("reliefNormalTexture", this->Relief->NormalTexture->GetTextureUnit());
   }
   if (method.NeedsAcceleration())
   {
-    program->SetUniformi("reliefAccelerationTexture", this->AccelerationTexture->GetTextureUnit());
+    program->SetUniformi(
+      "reliefAccelerationTexture", this->Acceleration->Texture->GetTextureUnit());
   }
   if (method.SetUniforms)
   {
-    method.SetUniforms(program, this->ReliefSize);
+    method.SetUniforms(program, this->Relief->Size);
   }
 }
 
 vtkIdType vtkOpenGLReliefTextures::GetTextureBytes(const vtkReliefSearchMethod& method) const
 {
-  return this->DepthTextureBytes + this->NormalTextureBytes +
-    (method.NeedsAcceleration() ? this->AccelerationTextureBytes : 0);
+  const vtkIdType relief = this->Relief ? this->Relief->GetBytes() : 0;
+  return relief +
+    (method.NeedsAcceleration() && this->Acceleration ? this->Acceleration->GetBytes() : 0);
 }
 
-void vtkOpenGLReliefTextures::ReleaseGraphicsResources(vtkWindow* window)
+vtkIdType vtkOpenGLReliefTextures::GetTextureBytesInUse(vtkWindow* window)
 {
-  this->DepthTexture->ReleaseGraphicsResources(window);
-  this->NormalTexture->ReleaseGraphicsResources(window);
-  this->AccelerationTexture->ReleaseGraphicsResources(window);
-  this->DepthTextureBytes = 0;
-  this->NormalTextureBytes = 0;
-  this->AccelerationTextureBytes = 0;
-  this->UploadedAcceleration = nullptr;
+  vtkIdType bytes = 0;
+  for (const auto& entry : SharedReliefs())
+  {
+    const auto relief = entry.second.lock();
+    bytes += relief && relief->Window == window ? relief->GetBytes() : 0;
+  }
+  for (const auto& entry : SharedAccelerations())
+  {
+    const auto acceleration = entry.second.lock();
+    bytes += acceleration && acceleration->Relief->Window == window ? acceleration->GetBytes() : 0;
+  }
+  return bytes;
+}
+
+void vtkOpenGLReliefTextures::ReleaseGraphicsResources(vtkWindow*)
+{
+  // the last holder of a shared texture deletes it, with its context current
+  this->Acceleration.reset();
+  this->Relief.reset();
 }
 
 void vtkOpenGLReliefTextures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Owner: " << this->Owner << "\n";
-  os << indent << "ReliefSize: " << this->ReliefSize[0] << "x" << this->ReliefSize[1] << "\n";
-  os << indent << "InputNormals: " << this->InputNormals << "\n";
-  os << indent << "DepthTextureBytes: " << this->DepthTextureBytes << "\n";
-  os << indent << "NormalTextureBytes: " << this->NormalTextureBytes << "\n";
-  os << indent << "AccelerationTextureBytes: " << this->AccelerationTextureBytes << "\n";
-  os << indent << "AccelerationUsable: " << this->AccelerationUsable << "\n";
+  if (this->Relief)
+  {
+    os << indent << "ReliefSize: " << this->Relief->Size[0] << "x" << this->Relief->Size[1]
+       << "\n";
+    os << indent << "InputNormals: " << this->Relief->InputNormals << "\n";
+    os << indent << "ReliefTextureBytes: " << this->Relief->GetBytes() << "\n";
+  }
+  else
+  {
+    os << indent << "Relief: (none)\n";
+  }
+  if (this->Acceleration)
+  {
+    os << indent << "AccelerationTextureBytes: " << this->Acceleration->GetBytes() << "\n";
+    os << indent << "AccelerationUsable: " << !this->Acceleration->Failed << "\n";
+  }
+  else
+  {
+    os << indent << "Acceleration: (none)\n";
+  }
 }

@@ -122,7 +122,10 @@ struct Maps
 
 void PrepareMaps(const std::string& method, vtkOpenGLReliefMapper* mapper, Maps& maps)
 {
-  maps.Field = mirror::FieldOf(mapper->GetReliefTextureFilter()->GetOutput());
+  // the mapper's filter, fed at the render, makes what the GPU was given
+  vtkReliefTextureFilter* relief = mapper->GetReliefTextureFilter();
+  relief->Update();
+  maps.Field = mirror::FieldOf(relief->GetOutput());
   mirror::CurrentField = &maps.Field;
   if (method == "MaximumMipmap")
   {

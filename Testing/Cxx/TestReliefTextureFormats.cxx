@@ -127,6 +127,7 @@ int TestReliefTextureFormats(int, char*[])
 
   // the filter's own normals, given back as a normal map with the depth in alpha
   vtkReliefTextureFilter* reliefTexture = mapper->GetReliefTextureFilter();
+  reliefTexture->Update();
   vtkNew<vtkImageData> normalMap;
   normalMap->DeepCopy(reliefTexture->GetOutput());
   mapper->SetHeightMapData(normalMap);
