@@ -118,9 +118,12 @@ int main(int argc, char* argv[])
       "thin features: Linear, LinearBinary, Secant, ExactDDA, SafetyRadius, ConeStep, "
       "MaximumMipmap at 45 (top) and 80 degrees",
       [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1400, 400); } },
-    { "sample_count", "height samples per pixel, LinearBinary 10+5 (blue 0, red 20)",
+    { "sample_count",
+      "height samples per pixel, LinearBinary 10+5, the view ray's search (blue 0, red 20)",
       [](vtkRenderWindow* w) {
-        ReliefScene::ShowBricks(w, 640, 480, 45.0)->SetDisplayModeToSampleCount();
+        auto mapper = ReliefScene::ShowBricks(w, 640, 480, 45.0);
+        mapper->SetDisplayModeToSampleCount();
+        mapper->FootprintShadingOff(); // the footprint's rays would multiply it by five
       } },
   };
 

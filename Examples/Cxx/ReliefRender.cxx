@@ -62,6 +62,7 @@ struct Options
   int BinarySteps = 5;
   double SafetyTolerance = 0.0;
   bool Shadows = true;
+  bool FootprintShading = true;
   bool Quadric = false; // the curved frame: the relief carves the silhouette
   bool Derivative = false; // the frame from screen-space derivatives: no tangents
   double Azimuth = 0.0;
@@ -111,6 +112,8 @@ void PrintUsage(std::ostream& os)
         "  --safety-tolerance E depth the safety-radius search may pass below the\n"
         "                       surface unnoticed, 0 or more (default: 0, exact)\n"
         "  --no-shadows         turn self-shadowing off\n"
+        "  --point-shading      light each pixel by the normal at its hit alone, not over\n"
+        "                       its footprint (faster where minified; aliases there)\n"
         "  --quadric            curved relief (vtkOpenGLQuadricReliefMapper): the relief\n"
         "                       carves the outline of a curved mesh\n"
         "  --derivative         tangent-free relief (vtkOpenGLDerivativeReliefMapper):\n"
@@ -236,6 +239,7 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
   const std::map<std::string, std::function<void()>> flags = {
     { "--depth-convention", [&options]() { options.DepthConvention = true; } },
     { "--no-shadows", [&options]() { options.Shadows = false; } },
+    { "--point-shading", [&options]() { options.FootprintShading = false; } },
     { "--quadric", [&options]() { options.Quadric = true; } },
     { "--derivative", [&options]() { options.Derivative = true; } },
     { "--sample-count", [&options]() { options.SampleCount = true; } },
@@ -544,6 +548,7 @@ int main(int argc, char* argv[])
   mapper->SetBinarySteps(options.BinarySteps);
   mapper->SetSafetyRadiusTolerance(options.SafetyTolerance);
   mapper->SetSelfShadowing(options.Shadows);
+  mapper->SetFootprintShading(options.FootprintShading);
   if (options.SampleCount)
   {
     mapper->SetDisplayModeToSampleCount();

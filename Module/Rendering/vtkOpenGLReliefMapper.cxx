@@ -232,6 +232,15 @@ void vtkOpenGLReliefMapper::SetSelfShadowing(bool enabled)
   }
 }
 
+void vtkOpenGLReliefMapper::SetFootprintShading(bool enabled)
+{
+  if (enabled != this->FootprintShading)
+  {
+    this->FootprintShading = enabled;
+    this->ModifiedShaderOptions();
+  }
+}
+
 void vtkOpenGLReliefMapper::SetDepthCorrection(bool enabled)
 {
   if (enabled != this->DepthCorrection)
@@ -664,7 +673,7 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   vtkReliefShaderRewrites::DeclareModelToView(vertexSource, "//VTK::Relief::CameraDec");
   shaders[vtkShader::Vertex]->SetSource(vertexSource);
   std::string fragmentSource = shaders[vtkShader::Fragment]->GetSource();
-  this->WeightLightsByShadow(fragmentSource, lightComplexity, actor);
+  this->LightThroughRelief(fragmentSource, lightComplexity, actor);
   // VTK reads the actor's textures with implicit derivatives, which jump wherever the
   // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
   // them at the level of the entry coordinates, as the relief itself is read.
@@ -784,29 +793,27 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
   }
 }
 
-void vtkOpenGLReliefMapper::WeightLightsByShadow(
+void vtkOpenGLReliefMapper::LightThroughRelief(
   std::string& fragmentSource, int lightComplexity, vtkActor* actor)
 {
-  if (lightComplexity < 2)
-  {
-    return; // unlit, or a headlight: it lights what the camera sees, no self-shadow
-  }
-  if (vtkReliefShaderRewrites::WeightLightsBy(fragmentSource, "reliefShadow") > 0 ||
-    !this->SelfShadowing || this->WarnedNoSelfShadowing)
+  if (lightComplexity < 1 ||
+    vtkReliefShaderRewrites::LightThrough(fragmentSource, "reliefDiffuse", "reliefShadow") > 0 ||
+    this->WarnedUnmatchedLighting)
   {
     return;
   }
-  this->WarnedNoSelfShadowing = true;
+  this->WarnedUnmatchedLighting = true;
   if (actor->GetProperty()->GetInterpolation() == VTK_PBR)
   {
-    vtkWarningMacro("Self-shadowing is not available with this lighting model "
-                    "(physically based interpolation); the relief is lit without it.");
+    vtkWarningMacro("Self-shadowing and the relief's footprint shading are not available "
+                    "with this lighting model (physically based interpolation); the relief "
+                    "is lit by the normal at each hit, without self-shadows.");
   }
   else
   {
     vtkWarningMacro("This VTK's lighting code does not hold the diffuse terms "
-                    "vtkReliefShaderRewrites::WeightLightsBy follows (VTK 9.1 and 9.2): the "
-                    "relief is lit without self-shadowing.");
+                    "vtkReliefShaderRewrites::LightThrough follows (VTK 9.1 and 9.2): the "
+                    "relief is lit by the normal at each hit, without self-shadows.");
   }
 }
 
@@ -830,6 +837,7 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   program->SetUniformi("reliefLinearSteps", this->LinearSteps);
   program->SetUniformi("reliefBinarySteps", this->BinarySteps);
   program->SetUniformi("reliefSelfShadowing", this->SelfShadowing ? 1 : 0);
+  program->SetUniformi("reliefFootprintShading", this->FootprintShading ? 1 : 0);
   program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
   program->SetUniformi("reliefTwoSided", this->TwoSidedRelief ? 1 : 0);
@@ -913,6 +921,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SafetyRadiusTolerance: " << this->SafetyRadiusTolerance << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "SelfShadowing: " << this->SelfShadowing << "\n";
+  os << indent << "FootprintShading: " << this->FootprintShading << "\n";
   os << indent << "DepthCorrection: " << this->DepthCorrection << "\n";
   os << indent << "TwoSidedRelief: " << this->TwoSidedRelief << "\n";
   os << indent << "BackFacesLeftOut: " << this->BackFacesLeftOut << "\n";

@@ -20,13 +20,14 @@
  * an acceleration image (MaximumMipmap's pyramid) build it themselves from the height
  * map, once per change of the map, unless one is given on port 2
  * (SetAccelerationConnection()). Every setter modifies the mapper, as VTK's do; those
- * that change only a uniform (DepthScale, step counts, SelfShadowing, DepthCorrection,
- * DisplayMode, TwoSidedRelief) rebuild neither the shader nor the buffers, the search
- * method and the frame's options only the shader.
+ * that change only a uniform (DepthScale, step counts, SelfShadowing, FootprintShading,
+ * DepthCorrection, DisplayMode, TwoSidedRelief) rebuild neither the shader nor the
+ * buffers, the search method and the frame's options only the shader.
  *
- * On the GPU the relief is one 16-bit depth texture with its mipmaps (vtkReliefTextureFilter's
- * depths lie on its levels): the searches read it, and the shading rebuilds the relief
- * normal from it by central differences, so the surface lit is the surface searched. A
+ * On the GPU the relief is one 16-bit depth texture at full resolution
+ * (vtkReliefTextureFilter's depths lie on its levels): the searches read it, and the
+ * shading lights the gradient of its bilinear field at the hit, so the surface lit is the
+ * surface searched, at every distance and view angle. A
  * normal map given with the heights (the filter's UseInputNormals) adds its (nx, ny) in
  * 16 bits. ConeStep's cone map takes two bytes a cell (vtkConeStepMapFilter::EncodeCone),
  * the other acceleration images floats. GetTextureBytes() reports the total. Mappers of
@@ -168,6 +169,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Light the relief as each pixel's footprint is, not as the one point at its centre:
+   * where a pixel spans more than a third of a texel, the rays through four points of it
+   * are searched too and the lights' diffuse terms averaged over their hits' normals
+   * (about 5 times the samples where it spans 0.7 texels or more). Off, the normal at
+   * the hit alone lights the pixel: minified or oblique relief aliases, as point-sampled
+   * geometry does. Default on.
+   */
+  void SetFootprintShading(bool enabled);
+  vtkGetMacro(FootprintShading, bool);
+  vtkBooleanMacro(FootprintShading, bool);
+  ///@}
+
+  ///@{
   /// A second texture-space ray toward each light darkens relief in its own shadow. Default on.
   void SetSelfShadowing(bool enabled);
   vtkGetMacro(SelfShadowing, bool);
@@ -243,7 +258,7 @@ public:
 
   /**
    * GPU memory the relief's textures take, in bytes, as last uploaded by a render:
-   * the 16-bit depth texture with its mipmaps, an input normal map's texture if the
+   * the 16-bit depth texture, an input normal map's mipmapped texture if the
    * relief texture filter uses one (UseInputNormals), and the active search method's
    * acceleration image. 0 before the first render and after ReleaseGraphicsResources().
    * Mappers drawing in one window share these textures when their height map is the
@@ -343,8 +358,11 @@ protected:
     bool (*insertion)(std::string&, const char*, const std::string&));
   void ReportMissingShaderTags();
   ///@}
-  /// Each light's diffuse term weighted by the relief's self-shadow, or one warning why not.
-  void WeightLightsByShadow(std::string& fragmentSource, int lightComplexity, vtkActor* actor);
+  /**
+   * Each light's diffuse term lit over the pixel's footprint (reliefDiffuse) and, but the
+   * headlight's, weighted by the relief's self-shadow; or one warning why not.
+   */
+  void LightThroughRelief(std::string& fragmentSource, int lightComplexity, vtkActor* actor);
 
   int SearchMethod = LINEAR_BINARY;
   int LinearSteps = 10;
@@ -352,6 +370,7 @@ protected:
   double SafetyRadiusTolerance = 0.0;
   double DepthScale = 0.05;
   bool SelfShadowing = true;
+  bool FootprintShading = true;
   bool DepthCorrection = true;
   int DisplayMode = SHADED;
   bool TwoSidedRelief = false;
@@ -380,7 +399,7 @@ protected:
   bool WarnedMissingHeightMap = false;
   bool WarnedDepthScale = false;
   double DrawnDepthScale = 0.0; // what this render's shaders use: UsableDepthScale()
-  bool WarnedNoSelfShadowing = false;
+  bool WarnedUnmatchedLighting = false;
   std::vector<const char*> MissingShaderTags; // by the shader being built
   bool WarnedMissingShaderTags = false;
   bool WarnedTextureReads = false;

@@ -42,12 +42,14 @@ vtkIdType MipmappedBytes(int width, int height, int texelBytes)
   return bytes * texelBytes;
 }
 
-// A repeating 2D texture of `values` (one or two components) in `internalFormat`:
-// mipmapped and trilinearly filtered, or read texel by texel (nearest filtering: the
-// acceleration images, one texel per cell, repeating as the height map does).
+// A repeating 2D texture of `values` (one or two components) in `internalFormat`, read
+// with `filter`: vtkTextureObject::LinearMipmapLinear (trilinear, its mipmaps made),
+// Linear (bilinear, at full resolution) or Nearest (texel by texel: the acceleration
+// images, one texel per cell, repeating as the height map does).
 bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
-  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat, bool mipmapped)
+  const int dimensions[3], vtkDataArray* values, unsigned int internalFormat, int filter)
 {
+  const bool mipmapped = filter == vtkTextureObject::LinearMipmapLinear;
   const int components = values->GetNumberOfComponents();
   texture->SetContext(window);
   // vtkTextureObject keeps the formats and data type of an earlier upload, and one
@@ -57,9 +59,8 @@ bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
   texture->SetFormat(components == 1 ? GL_RED : GL_RG);
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
-  texture->SetMinificationFilter(
-    mipmapped ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(mipmapped ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  texture->SetMinificationFilter(filter);
+  texture->SetMagnificationFilter(mipmapped ? vtkTextureObject::Linear : filter);
   if (!texture->Create2DFromRaw(dimensions[0], dimensions[1], components,
         values->GetDataType(), values->GetVoidPointer(0)))
   {
@@ -236,9 +237,10 @@ bool vtkOpenGLReliefTextures::SharedRelief::Upload(
   }
 
   // One 16-bit depth texture serves the searches and the shading, which rebuilds the
-  // normal from it: the filter's depths lie on that grid, so it holds them exactly, in a
-  // sixth of the bytes of float normals and depth. Only a normal map given with the
-  // heights needs a texture of its own: its (nx, ny), nz >= 0 following from them.
+  // normal from it: the filter's depths lie on that grid, so it holds them exactly, in an
+  // eighth of the bytes of float normals and depth; without mipmaps, as every read is at
+  // full resolution. Only a normal map given with the heights needs a texture of its own:
+  // its (nx, ny), nz >= 0 following from them, mipmapped as colour textures are.
   vtkDataArray* texels = relief->GetPointData()->GetScalars();
   const vtkIdType texelCount = relief->GetNumberOfPoints();
   vtkNew<vtkUnsignedShortArray> depths;
@@ -248,8 +250,9 @@ bool vtkOpenGLReliefTextures::SharedRelief::Upload(
     depths->SetValue(texel, static_cast<unsigned short>(std::lround(
       texels->GetComponent(texel, 3) * vtkReliefTextureFilter::DEPTH_LEVELS)));
   }
-  bool uploaded = UploadTexture(this->DepthTexture, window, dimensions, depths, GL_R16, true);
-  this->DepthBytes = MipmappedBytes(dimensions[0], dimensions[1], 2);
+  bool uploaded = UploadTexture(
+    this->DepthTexture, window, dimensions, depths, GL_R16, vtkTextureObject::Linear);
+  this->DepthBytes = 2 * relief->GetNumberOfPoints();
   this->NormalBytes = 0;
   if (this->InputNormals)
   {
@@ -262,7 +265,8 @@ bool vtkOpenGLReliefTextures::SharedRelief::Upload(
       normals->SetTypedComponent(texel, 1, static_cast<float>(texels->GetComponent(texel, 1)));
     }
     uploaded = uploaded &&
-      UploadTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM, true);
+      UploadTexture(this->NormalTexture, window, dimensions, normals, GL_RG16_SNORM,
+        vtkTextureObject::LinearMipmapLinear);
     this->NormalBytes = MipmappedBytes(dimensions[0], dimensions[1], 4);
   }
   if (!uploaded)
@@ -374,8 +378,8 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   const unsigned int internalFormat = cones ? GL_RG8
     : values->GetNumberOfComponents() == 1  ? GL_R32F
                                             : GL_RG32F;
-  if (!UploadTexture(
-        this->Texture, window, this->Image->GetDimensions(), values, internalFormat, false))
+  if (!UploadTexture(this->Texture, window, this->Image->GetDimensions(), values, internalFormat,
+        vtkTextureObject::Nearest))
   {
     vtkErrorWithObjectMacro(
       reporter, "Could not upload the " << method.Name << " acceleration image to the GPU.");

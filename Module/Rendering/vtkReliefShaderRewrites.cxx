@@ -98,20 +98,24 @@ bool IsWordCharacter(char c)
 }
 }
 
-int vtkReliefShaderRewrites::WeightLightsBy(std::string& fragment, const char* visibility)
+int vtkReliefShaderRewrites::LightThrough(
+  std::string& fragment, const char* diffuse, const char* visibility)
 {
-  // vtkOpenGLPolyDataMapper's directional lights (light complexity 2), then its
-  // positional ones (3)
+  // vtkOpenGLPolyDataMapper's headlight (light complexity 1), its directional lights (2),
+  // then its positional ones (3)
+  const std::string lit = diffuse;
   const std::string weight = std::string(" * ") + visibility;
-  int lights = RewriteEach(fragment, "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC",
-    "));", IsDigit, [&weight](const std::string& light) {
-      return "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC" + light + "))" + weight +
-        "(-lightDirectionVC" + light + ");";
+  int lights = RewriteEach(fragment, "float df = max(0.0,normalVCVSOutput.z);", "", nullptr,
+    [&lit](const std::string&) { return "float df = " + lit + "(vec3(0.0, 0.0, 1.0));"; });
+  lights += RewriteEach(fragment, "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC",
+    "));", IsDigit, [&](const std::string& light) {
+      return "df = " + lit + "(-lightDirectionVC" + light + ")" + weight + "(-lightDirectionVC" +
+        light + ");";
     });
   lights += RewriteEach(fragment,
     "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC));", "", nullptr,
-    [&weight](const std::string&) {
-      return "df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC))" + weight +
+    [&](const std::string&) {
+      return "df = max(0.0, attenuation) * " + lit + "(-vertLightDirectionVC)" + weight +
         "(-vertLightDirectionVC);";
     });
   return lights;

@@ -64,12 +64,14 @@ public:
   static const char* GetTextureCoordinates() { return "tcoordVCVSOutput"; }
 
   /**
-   * In VTK's generated (non-PBR) lighting code, each light's diffuse term weighted by
-   * `visibility`(direction to the light), which the specular term follows through
-   * sign(df). Returns the number of diffuse terms weighted, one per light: 0 where the
-   * code did not match.
+   * In VTK's generated (non-PBR) lighting code, each light's diffuse cosine
+   * max(0, dot(normal, toLight)) replaced by `diffuse`(toLight), and weighted by
+   * `visibility`(toLight) for directional and positional lights (the specular term
+   * follows through sign(df)); the headlight's by `diffuse`(0, 0, 1) alone (it shines
+   * along the view: no self-shadow). Returns the number of terms replaced, one per
+   * light: 0 where the code did not match.
    */
-  static int WeightLightsBy(std::string& fragment, const char* visibility);
+  static int LightThrough(std::string& fragment, const char* diffuse, const char* visibility);
 
   /**
    * VTK's implicit-derivative reads of textures at GetTextureCoordinates() made through

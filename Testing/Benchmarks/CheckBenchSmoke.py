@@ -123,6 +123,20 @@ def check_chart(path):
         fail(path + " is blank")
 
 
+def check_shading(text):
+    """The printed shading table: a row per map and view, every figure a number, and its
+    summary line."""
+    if "Up to 80 degrees, the largest luminance bias is" not in text:
+        fail("the bench printed no shading summary")
+    rows = [line for line in text.splitlines() if line.startswith("| steps |")]
+    if len(rows) < 2:
+        fail("the shading table has %d rows of the steps map, not 2 or more" % len(rows))
+    for row in rows:
+        cells = [cell.strip() for cell in row.strip().strip("|").split("|")]
+        for cell in cells[1:10]:
+            figure(cell)
+
+
 def check_sharing(text):
     """The printed table of many actors on one height map (the --report section): one
     row for one actor and one for several, every figure a number, and several mappers of
@@ -164,7 +178,7 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric,derivative,sharing",
+               "accuracy,sweeps,quadric,derivative,shading,sharing",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -194,6 +208,7 @@ def main():
     check_derivative(text)
     for chart in CHARTS:
         check_chart(os.path.join(arguments.output, "images", chart))
+    check_shading(run.stdout)
     check_sharing(run.stdout)
     print("bench smoke run: results and charts well formed")
 

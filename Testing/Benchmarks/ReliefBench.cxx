@@ -13,6 +13,7 @@
 #include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
 #include "ReliefScene.h"
+#include "ReliefShadingStudy.h"
 #include "ReliefSweeps.h"
 
 #include "vtkActor.h"
@@ -87,7 +88,7 @@ bool KnownSections(const std::string& list)
   {
     if (section != "plain" && section != "methods" && section != "filters" &&
       section != "accuracy" && section != "sweeps" && section != "quadric" &&
-      section != "derivative" && section != "sharing")
+      section != "derivative" && section != "sharing" && section != "shading")
     {
       return false;
     }
@@ -385,7 +386,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
                    "                      filters, accuracy, sweeps, quadric, derivative,\n"
-                   "                      sharing)\n"
+                   "                      sharing, shading)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
@@ -552,6 +553,18 @@ int main(int argc, char* argv[])
         ReliefDerivativeStudy::MeasureFrameError({ 10.0, 30.0, 50.0, 60.0, 70.0, 80.0, 85.0 }),
         derivative)
     : "(not run)\n";
+  ReliefShadingStudy::Options shading;
+  if (quick)
+  {
+    shading.Width = 64;
+    shading.Height = 48;
+    shading.Angles = { 0.0, 75.0 };
+    shading.TexelsPerPixel = { 4.0 };
+    shading.Maps = { "steps" };
+  }
+  const std::string shadingSection = wanted("shading")
+    ? ReliefShadingStudy::Report(ReliefShadingStudy::Measure(shading), shading)
+    : "(not run)\n";
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -633,7 +646,7 @@ int main(int argc, char* argv[])
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
             << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection << "\n"
-            << sharingContext << sharingTable;
+            << shadingSection << "\n" << sharingContext << sharingTable;
 
   if (!report.empty())
   {
@@ -654,7 +667,8 @@ int main(int argc, char* argv[])
         << machine.str() << "\n" << accuracySection
         << "\n## Stability: where each method fails\n\n" << sweepsSection
         << "\n## Curved surfaces: the quadric frame's silhouettes\n\n" << quadricSection
-        << "\n## Tangent-free relief: the derivative frame\n\n" << derivativeSection;
+        << "\n## Tangent-free relief: the derivative frame\n\n" << derivativeSection
+        << "\n## Shading true to the pixel's footprint\n\n" << shadingSection;
     std::cout << "written to " << results << "\n";
   }
   return 0;

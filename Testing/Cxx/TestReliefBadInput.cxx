@@ -452,6 +452,7 @@ void HeightMapNotFinite()
   values[1400] = -std::numeric_limits<float>::infinity();
   auto mapper = NewMapper();
   mapper->SetHeightMapData(heights);
+  mapper->FootprintShadingOff(); // the samples of one search
   const Census census = Render(Grid(), mapper);
   CheckWarnedWithRelief(census, "non-finite height(s)", "NaN and infinite heights");
   Check(census.MaxSamples <= 15, "NaN and infinite heights: every search ends within its steps");
@@ -472,6 +473,7 @@ void StepsOutOfRange()
   Check(mapper->GetBinarySteps() == 32, "BinarySteps clamps to 32");
   Check(recorder->Count(vtkCommand::WarningEvent) == 4, "each clamp warns");
   mapper->SetBinarySteps(0);
+  mapper->FootprintShadingOff(); // the samples of one search
   const Census census = Render(Grid(), mapper);
   Check(census.Relief > 2 * HalfCovered && census.MaxSamples == 1,
     "one linear step and no bisection take exactly one sample");

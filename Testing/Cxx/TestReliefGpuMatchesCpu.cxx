@@ -104,10 +104,6 @@ constexpr double AgreeTexels = 0.01;
 // most 69% of one scene's pixels agreeing.
 constexpr double RequiredShare = 0.97;
 constexpr int MinimumCompared = 300;
-// Fixed-step searches read the field at the entry's mipmap level, the mirror level 0
-// only: compare where the GPU reads level 0 too (the texture magnified), with a margin
-// for its per-quad derivatives. Half the rivets' view qualifies, all the thin features'.
-constexpr double MaximumLod = -0.1;
 
 // What the mirror reads, made from the relief texture the mapper uploaded by the filters
 // the mapper runs (vtkOpenGLReliefTextures::BuildAcceleration: a setting it gives its
@@ -222,7 +218,6 @@ struct Fragment
 {
   double PositionVC[3]; // where the pixel's centre ray meets the square, view coordinates
   glm::vec2 TCoord;     // the square's texture coordinates there
-  double Lod;           // the mipmap level the shader's reads take
 };
 
 // The square of ReliefScene::Square(tiles) spans [-0.5, 0.5]^2 in z = 0 with texture
@@ -243,30 +238,17 @@ bool SquareAt(
   return s > 0.0 && s < 1.0 && std::abs(world[0]) < 0.49 && std::abs(world[1]) < 0.49;
 }
 
-bool FragmentAt(
-  const View& view, double tiles, int i, int j, glm::vec2 textureSize, Fragment& fragment)
+bool FragmentAt(const View& view, double tiles, int i, int j, Fragment& fragment)
 {
-  const double x = i + 0.5;
-  const double y = j + 0.5;
   double world[3];
   glm::dvec2 tcoord;
-  glm::dvec2 right;
-  glm::dvec2 up;
-  double ignored[3];
-  if (!SquareAt(view, tiles, x, y, world, tcoord) ||
-    !SquareAt(view, tiles, x + 1.0, y, ignored, right) ||
-    !SquareAt(view, tiles, x, y + 1.0, ignored, up))
+  if (!SquareAt(view, tiles, i + 0.5, j + 0.5, world, tcoord))
   {
     return false;
   }
   const double point[4] = { world[0], world[1], world[2], 1.0 };
   View::Apply(view.WorldToView, point, fragment.PositionVC);
   fragment.TCoord = glm::vec2(float(tcoord.x), float(tcoord.y));
-  // reliefLevel(reliefTextureSize) with the derivatives of the texture coordinates
-  const glm::dvec2 size(textureSize);
-  const glm::dvec2 alongX = (right - tcoord) * size;
-  const glm::dvec2 alongY = (up - tcoord) * size;
-  fragment.Lod = 0.5 * std::log2(std::max(glm::dot(alongX, alongX), glm::dot(alongY, alongY)));
   return true;
 }
 
@@ -307,8 +289,7 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
     {
       Fragment fragment;
       const float z = zbuffer[static_cast<size_t>(j) * Width + i];
-      if (!FragmentAt(view, scene.Tiles, i, j, size, fragment) || fragment.Lod > MaximumLod ||
-        z >= 1.0f)
+      if (!FragmentAt(view, scene.Tiles, i, j, fragment) || z >= 1.0f)
       {
         continue;
       }

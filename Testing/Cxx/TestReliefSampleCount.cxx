@@ -1,5 +1,6 @@
 // SampleCount display mode, the measure of cost: every covered pixel reports the height
-// samples its view ray took, within the bounds of the search method; switching the
+// samples its view ray took, within the bounds of the search method, and with footprint
+// shading those of the rays through four points of the pixel too; switching the
 // method rebuilds the shader, uniform-only setters modify the mapper and rebuild
 // neither its shader nor its buffers, and released graphics resources come back.
 #include "ReliefScene.h"
@@ -82,6 +83,7 @@ int TestReliefSampleCount(int, char*[])
   mapper->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
   mapper->SetDepthScale(0.05);
   mapper->SetDisplayModeToSampleCount();
+  mapper->FootprintShadingOff(); // first the view ray's own search
   renderer->AddActor(ReliefScene::ReliefActor(mapper, "bricks_color.png"));
   ReliefScene::ViewSquare(renderer, 45.0);
   int failures = 0;
@@ -99,6 +101,14 @@ int TestReliefSampleCount(int, char*[])
   check(linearBinary.Pixels > 5000, "the square covers the view");
   check(linearBinary.Minimum >= 6 && linearBinary.Maximum <= 15, "LinearBinary takes 6 to 15");
 
+  // the footprint's four rays, searched alike where a pixel spans 0.7 texels or more (the
+  // bricks' 512 texels on 2 tiles seen at 45 degrees: everywhere) and counted
+  mapper->FootprintShadingOn();
+  Counts footprint = SampleCounts(window);
+  check(footprint.Minimum >= 5 * 6 && footprint.Maximum <= 5 * 15,
+    "footprint shading: five LinearBinary searches a pixel");
+  mapper->FootprintShadingOff();
+
   const vtkMTimeType before = mapper->GetMTime();
   const int shaderBuilds = mapper->ShaderBuilds;
   const int bufferBuilds = mapper->BufferBuilds;
@@ -108,6 +118,8 @@ int TestReliefSampleCount(int, char*[])
   mapper->SetSelfShadowing(false);
   mapper->SetDepthCorrection(false);
   mapper->SetTwoSidedRelief(true);
+  mapper->SetFootprintShading(true);
+  mapper->SetFootprintShading(false);
   check(mapper->GetMTime() > before, "setters modify the mapper");
   Counts moreSteps = SampleCounts(window);
   check(shaderBuilds > 0 && mapper->ShaderBuilds == shaderBuilds,

@@ -140,14 +140,17 @@ int TestReliefShaderRewrites(int, char*[])
         name + ": VTK's template has no " + tag.Name);
     }
     std::string fragment = mapper->Generated[vtkShader::Fragment];
-    const int weighted = Rewrites::WeightLightsBy(fragment, "reliefShadow");
-    if (configuration.Lights > 0)
+    const int weighted = Rewrites::LightThrough(fragment, "reliefDiffuse", "reliefShadow");
+    if (configuration.Lit)
     {
-      // VTK writes each light's lighting out: one term per light
-      const int expected = configuration.Lights;
+      // VTK writes each light's lighting out: one term per light, the headlight's too
+      const int expected = std::max(configuration.Lights, 1);
       Check(weighted == expected,
         name + ": " + std::to_string(weighted) + " diffuse terms found, not " +
           std::to_string(expected));
+      Check(fragment.find("normalVCVSOutput, -") == std::string::npos &&
+          fragment.find("max(0.0,normalVCVSOutput.z)") == std::string::npos,
+        name + ": a diffuse cosine left as VTK wrote it");
     }
     if (configuration.Textured)
     {
@@ -171,7 +174,7 @@ int TestReliefShaderRewrites(int, char*[])
   Check(!Rewrites::InsertAfter(other, Rewrites::FragmentStart, "x") &&
       !Rewrites::InsertBefore(other, Rewrites::FragmentStart, "x") &&
       !Rewrites::Replace(other, Rewrites::FragmentDepth, "x") &&
-      Rewrites::WeightLightsBy(other, "reliefShadow") == 0 &&
+      Rewrites::LightThrough(other, "reliefDiffuse", "reliefShadow") == 0 &&
       Rewrites::ReadTexturesThrough(other, "reliefTextureAtRay") == 0 && other == unchanged,
     "rewrites of code without their tags or statements");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

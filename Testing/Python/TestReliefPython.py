@@ -114,6 +114,10 @@ class TestReliefPython(unittest.TestCase):
         mapper.SetDepthScale(0.125)
         self.assertEqual(mapper.GetDepthScale(), 0.125)
 
+        self.assertTrue(mapper.GetFootprintShading())
+        mapper.FootprintShadingOff()
+        self.assertFalse(mapper.GetFootprintShading())
+
         self.assertTrue(mapper.GetSelfShadowing())
         mapper.SelfShadowingOff()
         self.assertFalse(mapper.GetSelfShadowing())
@@ -223,6 +227,7 @@ class TestSampleCountRender(unittest.TestCase):
         cls.mapper.SetHeightMapData(read_image("bricks_height.png"))
         cls.mapper.SetDepthScale(0.05)
         cls.mapper.SetDisplayModeToSampleCount()
+        cls.mapper.FootprintShadingOff()  # the samples of the view ray's search alone
         actor = vtkActor()
         actor.SetMapper(cls.mapper)
         renderer = vtkRenderer()

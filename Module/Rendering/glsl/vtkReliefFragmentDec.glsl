@@ -13,25 +13,17 @@ uniform int reliefBinarySteps;
 uniform int reliefSelfShadowing;
 uniform int reliefDepthCorrection;
 uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
+uniform int reliefFootprintShading; // 1: lit over the pixel's footprint
 uniform int reliefTwoSided;        // 1: back faces carry relief wherever they are drawn
 uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative determinant)
 uniform mat4 reliefVCDCMatrix;
 in vec3 reliefPositionVSOutput;
 in vec2 reliefTCoordVSOutput;
 
-// Derivatives of the entry coordinates, taken once outside the search loops: every read
-// at a ray point uses the mipmap level they give, exactly the level textureGrad with
-// them would pick, computed once instead of at every read.
+// Derivatives of the entry coordinates, taken once outside the search loops, for the
+// colour textures read at the hit (reliefTextureAtRay).
 vec2 reliefGradX;
 vec2 reliefGradY;
-float reliefLod;
-
-float reliefLevel(vec2 texels)
-{
-  vec2 alongX = reliefGradX * texels;
-  vec2 alongY = reliefGradY * texels;
-  return 0.5 * log2(max(dot(alongX, alongX), dot(alongY, alongY)));
-}
 
 // A texture read at a point of the view ray, filtered as at its entry point: once a
 // fragment (colours, normals), so through textureGrad, which costs nothing here. Mesa's
@@ -40,7 +32,11 @@ float reliefLevel(vec2 texels)
 // two-pixel column of wrong colour wherever the level crosses a whole number.
 #define reliefTextureAtRay(sampler, uv) textureGrad(sampler, uv, reliefGradX, reliefGradY)
 
-#define RELIEF_DEPTH(uv) textureLod(reliefDepthTexture, uv, reliefLod).r
+// Depths are read at full resolution, whatever the footprint: the searches intersect and
+// the shading lights the field itself, never a mipmap's average of it, which lowers steps
+// and tilts their walls away from the viewer (too dark, or too bright, under minification
+// and at oblique views: Documentation/benchmarks.md, shading).
+#define RELIEF_DEPTH(uv) textureLod(reliefDepthTexture, uv, 0.0).r
 #define RELIEF_DEPTH_SIZE reliefTextureSize
 // a cell's corners (i, j), (i+1, j), (i, j+1), (i+1, j+1), the texture repeating
 #ifdef GL_ARB_texture_gather
@@ -58,24 +54,22 @@ vec4 reliefCellDepths(vec2 cell)
     texelFetch(reliefDepthTexture, high, 0).r);
 }
 #endif
-// The depth gradient (change of depth per unit of u and v) at a hit, at the level the
-// search read there: central differences one texel of that level apart, which at level 0
-// are exactly the bilinear blend of vtkReliefTextureFilter's per-texel normals, so the
-// shading slopes are those of the field searched; or the normal map's, read as the
-// filter encodes it.
-vec2 reliefDepthGradient(vec2 uv)
+#ifndef RELIEF_INPUT_NORMALS
+// The depth gradient (change of depth per unit of u and v) at `uv`: that of the bilinear
+// patch the searches intersect (the field between texel centres, Baboud and Decoret
+// 2006, s3.1), read at full resolution from the cell under it, so that the surface lit is
+// the surface searched.
+vec2 reliefFieldGradient(vec2 uv)
 {
-#ifdef RELIEF_INPUT_NORMALS
-  vec2 normalXY = reliefTextureAtRay(reliefNormalTexture, uv).xy;
-  float normalZ = sqrt(max(1.0 - dot(normalXY, normalXY), 0.0));
-  return normalXY / (max(normalZ, 1e-4) * reliefNormalRatio) * reliefTextureSize;
-#else
-  vec2 texel = exp2(max(reliefLod, 0.0)) / reliefTextureSize;
-  float alongU = RELIEF_DEPTH(uv + vec2(texel.x, 0.0)) - RELIEF_DEPTH(uv - vec2(texel.x, 0.0));
-  float alongV = RELIEF_DEPTH(uv + vec2(0.0, texel.y)) - RELIEF_DEPTH(uv - vec2(0.0, texel.y));
-  return 0.5 * vec2(alongU / texel.x, alongV / texel.y);
-#endif
+  vec2 at = uv * reliefTextureSize - 0.5;
+  vec2 cell = floor(at);
+  vec2 within = at - cell;
+  vec4 corners = RELIEF_CELL_DEPTHS(cell);
+  return vec2(mix(corners.y - corners.x, corners.w - corners.z, within.y),
+           mix(corners.z - corners.x, corners.w - corners.y, within.x)) *
+    reliefTextureSize;
 }
+#endif
 
 //VTK::Relief::Common
 //VTK::Relief::Search
@@ -107,6 +101,110 @@ float reliefShadow(vec3 toLightVC)
   }
   return reliefLightVisibility(
     reliefViewHit.clear, reliefToTexture(toLightVC), reliefLinearSteps);
+}
+
+// The field's unit normal at `uv`, on the frame's surface tilted by `slope`: the depth's
+// gradient along the surface tilts it, n = N + s_z grad(depth); or the normal map's,
+// read as the filter encodes it.
+vec3 reliefFieldNormal(vec2 uv, vec3 slope)
+{
+#ifdef RELIEF_INPUT_NORMALS
+  vec2 normalXY = reliefTextureAtRay(reliefNormalTexture, uv).xy;
+  float normalZ = sqrt(max(1.0 - dot(normalXY, normalXY), 0.0));
+  vec2 gradient = normalXY / (max(normalZ, 1e-4) * reliefNormalRatio) * reliefTextureSize;
+#else
+  vec2 gradient = reliefFieldGradient(uv);
+#endif
+  return normalize(reliefFrameN + slope +
+    max(reliefDepthScale, 0.0) * (reliefAxisU * gradient.x + reliefAxisV * gradient.y));
+}
+
+// The normals the pixel's footprint is lit with, and their weights (reliefShadeFootprint):
+// Lambert's cosine toward a light is the weighted mean of their clamped cosines
+// (reliefDiffuse), what a camera that averages the pixel sees, not the cosine of the one
+// normal the pixel's centre happens to hold.
+vec3 reliefFootprintNormals[5];
+float reliefFootprintWeights[5];
+int reliefFootprintCount = 0;
+
+void reliefAddFootprintNormal(vec3 normal, float weight)
+{
+  reliefFootprintNormals[reliefFootprintCount] = normal;
+  reliefFootprintWeights[reliefFootprintCount] = weight;
+  reliefFootprintCount += 1;
+}
+
+float reliefDiffuse(vec3 toLight)
+{
+  float cosine = 0.0;
+  for (int k = 0; k < reliefFootprintCount; ++k)
+  {
+    cosine += reliefFootprintWeights[k] * max(0.0, dot(reliefFootprintNormals[k], toLight));
+  }
+  return cosine;
+}
+
+// Four points of a pixel, a rotated grid: no two share a row or a column, so that edges
+// near the pixels' axes are sampled at four offsets (Akenine-Moller, Haines and Hoffman,
+// Real-Time Rendering, 3rd ed. 2008, s5.6.2).
+const vec2 reliefRotatedGrid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125),
+  vec2(0.125, 0.375), vec2(-0.375, 0.125));
+
+// The normals the pixel's footprint is lit with (reliefFootprintNormals), and their mean,
+// the normal VTK's lighting reads otherwise (specular): the hit's own where a pixel holds
+// less than a third of a texel, or with footprint shading off; from 0.7 texels on, those
+// of the rays through four points of the pixel (reliefRotatedGrid), each searched and
+// lit where it hits; in between, both, weighted (no seam). Point-sampled normals alias;
+// a mipmap's normal lights a step's walls for the whole footprint and seen obliquely
+// averages away what faces the viewer (Documentation/benchmarks.md, shading). The
+// footprint is the texels between neighbouring pixels' entries (the entry's
+// derivatives), measured along its shorter side. `samples` counts on. A normal map is
+// read filtered over the footprint already (reliefTextureAtRay).
+vec3 reliefShadeFootprint(
+  ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope, inout int samples)
+{
+  vec3 centre = reliefFieldNormal(uv, slope);
+  reliefFootprintCount = 0;
+  float side = min(length(fragment.tcoordAlongX * reliefTextureSize),
+    length(fragment.tcoordAlongY * reliefTextureSize));
+  float searched =
+    reliefFootprintShading == 1 && reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
+#ifdef RELIEF_INPUT_NORMALS
+  searched = 0.0;
+#endif
+  if (searched < 1.0)
+  {
+    reliefAddFootprintNormal(centre, 1.0 - searched);
+  }
+  int first = reliefFootprintCount;
+  for (int k = 0; k < 4 && searched > 0.0; ++k)
+  {
+    ReliefFragment quarter = fragment;
+    quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
+      reliefRotatedGrid[k].y * fragment.tcoordAlongY;
+    ReliefRay quarterRay = reliefFrameViewRay(frame, quarter);
+    ReliefHit hit = RELIEF_SEARCH(quarterRay, reliefLinearSteps, reliefBinarySteps);
+    samples += hit.samples;
+    if (!reliefFrameRayLeft(frame, quarterRay, hit))
+    {
+      vec2 at = hit.position.xy;
+      reliefAddFootprintNormal(reliefFieldNormal(at - round(at - uv), slope), searched);
+    }
+  }
+  for (int k = first; k < reliefFootprintCount; ++k)
+  {
+    reliefFootprintWeights[k] /= float(reliefFootprintCount - first);
+  }
+  if (searched > 0.0 && reliefFootprintCount == first)
+  {
+    reliefAddFootprintNormal(centre, searched); // no quarter's ray met the field
+  }
+  vec3 mean = vec3(0.0);
+  for (int k = 0; k < reliefFootprintCount; ++k)
+  {
+    mean += reliefFootprintWeights[k] * reliefFootprintNormals[k];
+  }
+  return dot(mean, mean) > 1e-12 ? normalize(mean) : centre;
 }
 
 //VTK::Relief::TCoordAtHit

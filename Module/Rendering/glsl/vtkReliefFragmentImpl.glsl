@@ -7,7 +7,6 @@
   vec2 reliefEntryTCoord = reliefEntryUsable ? reliefTCoordVSOutput : vec2(0.0);
   reliefGradX = dFdx(reliefEntryTCoord);
   reliefGradY = dFdy(reliefEntryTCoord);
-  reliefLod = reliefLevel(reliefTextureSize);
   ReliefFragment reliefFragment;
   reliefFragment.viewVC =
     cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(reliefPositionVSOutput);
@@ -64,14 +63,18 @@
   // A colour texture that does not repeat reads right wherever the hit stays that close.
   reliefHitTCoord -= round(reliefHitTCoord - reliefEntryTCoord);
   vec3 reliefHitVC = reliefPositionVSOutput + reliefViewVC * reliefHitDistance;
-  // the depth's gradient along the surface tilts the normal: n = N + s_z grad(depth)
-  vec3 reliefFieldSlopeVC = vec3(0.0);
+  // lit as the pixel's footprint is
+  vec3 reliefLitNormalVC = normalize(reliefFrameN + reliefSurfaceSlope);
   if (reliefFrameUsable)
   {
-    vec2 reliefSlope = reliefDepthGradient(reliefHitTCoord) * max(reliefDepthScale, 0.0);
-    reliefFieldSlopeVC = reliefAxisU * reliefSlope.x + reliefAxisV * reliefSlope.y;
+    reliefLitNormalVC = reliefShadeFootprint(
+      reliefFrame, reliefFragment, reliefHitTCoord, reliefSurfaceSlope, reliefViewHit.samples);
   }
-  vec3 reliefLitNormalVC = normalize(reliefFrameN + reliefSurfaceSlope + reliefFieldSlopeVC);
+  else
+  {
+    reliefFootprintCount = 0;
+    reliefAddFootprintNormal(reliefLitNormalVC, 1.0);
+  }
   vec4 reliefHitDC = reliefVCDCMatrix * vec4(reliefHitVC, 1.0);
   float reliefFragDepth = reliefDepthCorrection == 1 ?
     clamp(0.5 * reliefHitDC.z / reliefHitDC.w + 0.5, 0.0, 1.0) : gl_FragCoord.z;
