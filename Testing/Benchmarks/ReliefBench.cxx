@@ -531,6 +531,10 @@ int main(int argc, char* argv[])
     quadric.Height = 150;
     quadric.HeightMapSize = 32;
   }
+  if (!quick)
+  {
+    quadric.Facets = { 24, 32, 48 };
+  }
   quadric.ImageDirectory = accuracy.ImageDirectory;
   const std::string quadricSection = wanted("quadric")
     ? ReliefQuadricStudy::Report(ReliefQuadricStudy::Measure(quadric), quadric)

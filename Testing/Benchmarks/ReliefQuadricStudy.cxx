@@ -31,11 +31,9 @@ struct Shape
   double Frame[6]; // what the views frame
 };
 
-// 48 facets around: the polygons' sag below the surface stays under a fifth of
-// DepthScale, outside which no frame can draw the relief. The cylinder's views frame its
-// middle, so its outline is the curved sides, not the open rims (Oliveira and Policarpo 2005 have
-// no answer at a mesh's boundary, where the relief ends with the mesh).
-constexpr int Facets = 48;
+// The cylinder's views frame its middle, so its outline is the curved sides, not the open
+// rims (Oliveira and Policarpo 2005 have no answer at a mesh's boundary, where the relief
+// ends with the mesh).
 const Shape Shapes[] = {
   { "sphere", ReliefScene::Sphere, { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 } },
   { "cylinder", [](int resolution) { return ReliefScene::Cylinder(resolution); },
@@ -56,6 +54,17 @@ void Aim(vtkRenderer* renderer, const double view[2], const double frame[6], vtk
   // framed on the shape, not on the sunken truth
   renderer->ResetCamera(frame);
   renderer->ResetCameraClippingRange(truth->GetBounds());
+}
+
+// "24, 32 and 48"
+std::string FacetsList(const std::vector<int>& facets)
+{
+  std::string list;
+  for (size_t k = 0; k < facets.size(); ++k)
+  {
+    list += (k == 0 ? "" : k + 1 == facets.size() ? " and " : ", ") + std::to_string(facets[k]);
+  }
+  return list;
 }
 }
 
@@ -79,60 +88,64 @@ std::vector<Measurement> Measure(const Options& options)
   window->SetOffScreenRendering(1);
   auto renderer = ReliefScene::LitRenderer(window, options.Width, options.Height);
   std::vector<Measurement> measurements;
-  for (const Shape& shape : Shapes)
+  for (int facets : options.Facets)
   {
-    auto coarse = shape.Make(Facets);
-    auto truthMesh =
-      ReliefScene::DisplacedMesh(shape.Make(256), relief->GetOutput(), options.DepthScale, 0.5);
-    vtkNew<vtkPolyDataMapper> truthMapper;
-    truthMapper->SetInputData(truthMesh);
-    vtkNew<vtkPolyDataMapper> polygonMapper;
-    polygonMapper->SetInputData(coarse);
-    vtkNew<vtkOpenGLReliefMapper> flat;
-    vtkNew<vtkOpenGLQuadricReliefMapper> approximate;
-    vtkNew<vtkOpenGLQuadricReliefMapper> exact;
-    exact->SetDistanceModeToExact();
-    vtkOpenGLReliefMapper* mappers[] = { flat, approximate, exact };
-    for (vtkOpenGLReliefMapper* mapper : mappers)
+    for (const Shape& shape : Shapes)
     {
-      mapper->SetInputData(coarse);
-      mapper->SetHeightMapData(heights);
-      mapper->SetDepthScale(options.DepthScale);
-      mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
-      mapper->SetLinearSteps(32);
-      mapper->SetBinarySteps(6);
-    }
-    // the actors' default properties: the mappers decide which faces carry relief
-    const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::ReliefActor(truthMapper, ""),
-      ReliefScene::ReliefActor(polygonMapper, ""), ReliefScene::ReliefActor(flat, ""),
-      ReliefScene::ReliefActor(approximate, ""), ReliefScene::ReliefActor(exact, "") };
-    ReliefScene::Lineup lineup(window, renderer, actors);
-    for (const auto& view : Views)
-    {
-      Aim(renderer, view, shape.Frame, truthMesh);
-      const ReliefMetrics::Capture truth = lineup.Capture(actors[0]);
-      const ReliefMetrics::Capture polygons = lineup.Capture(actors[1]);
-      for (size_t f = 0; f < 3; ++f)
+      auto coarse = shape.Make(facets);
+      auto truthMesh =
+        ReliefScene::DisplacedMesh(shape.Make(256), relief->GetOutput(), options.DepthScale, 0.5);
+      vtkNew<vtkPolyDataMapper> truthMapper;
+      truthMapper->SetInputData(truthMesh);
+      vtkNew<vtkPolyDataMapper> polygonMapper;
+      polygonMapper->SetInputData(coarse);
+      vtkNew<vtkOpenGLReliefMapper> flat;
+      vtkNew<vtkOpenGLQuadricReliefMapper> approximate;
+      vtkNew<vtkOpenGLQuadricReliefMapper> exact;
+      exact->SetDistanceModeToExact();
+      vtkOpenGLReliefMapper* mappers[] = { flat, approximate, exact };
+      for (vtkOpenGLReliefMapper* mapper : mappers)
       {
-        const ReliefMetrics::Capture frame = lineup.Capture(actors[2 + f]);
-        Measurement measurement;
-        measurement.Shape = shape.Name;
-        measurement.Azimuth = view[0];
-        measurement.Elevation = view[1];
-        measurement.Frame = Frames()[f];
-        measurement.SilhouetteError = ReliefMetrics::SilhouetteError(frame, polygons, truth);
-        measurement.WrongPixels =
-          ReliefMetrics::WrongPixelFraction(frame, truth, options.DepthScale);
-        measurement.MeanSamples = ReliefScene::SampleCounts(window, renderer, mappers[f]).Mean;
-        measurements.push_back(measurement);
+        mapper->SetInputData(coarse);
+        mapper->SetHeightMapData(heights);
+        mapper->SetDepthScale(options.DepthScale);
+        mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
+        mapper->SetLinearSteps(32);
+        mapper->SetBinarySteps(6);
       }
-      if (options.Frames > 0)
+      // the actors' default properties: the mappers decide which faces carry relief
+      const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::ReliefActor(truthMapper, ""),
+        ReliefScene::ReliefActor(polygonMapper, ""), ReliefScene::ReliefActor(flat, ""),
+        ReliefScene::ReliefActor(approximate, ""), ReliefScene::ReliefActor(exact, "") };
+      ReliefScene::Lineup lineup(window, renderer, actors);
+      for (const auto& view : Views)
       {
-        const std::vector<double> medians = lineup.InterleavedMilliseconds(
-          { actors[2], actors[3], actors[4] }, options.Rounds, options.Frames);
+        Aim(renderer, view, shape.Frame, truthMesh);
+        const ReliefMetrics::Capture truth = lineup.Capture(actors[0]);
+        const ReliefMetrics::Capture polygons = lineup.Capture(actors[1]);
         for (size_t f = 0; f < 3; ++f)
         {
-          measurements[measurements.size() - 3 + f].Milliseconds = medians[f];
+          const ReliefMetrics::Capture frame = lineup.Capture(actors[2 + f]);
+          Measurement measurement;
+          measurement.Shape = shape.Name;
+          measurement.Facets = facets;
+          measurement.Azimuth = view[0];
+          measurement.Elevation = view[1];
+          measurement.Frame = Frames()[f];
+          measurement.SilhouetteError = ReliefMetrics::SilhouetteError(frame, polygons, truth);
+          measurement.WrongPixels =
+            ReliefMetrics::WrongPixelFraction(frame, truth, options.DepthScale);
+          measurement.MeanSamples = ReliefScene::SampleCounts(window, renderer, mappers[f]).Mean;
+          measurements.push_back(measurement);
+        }
+        if (options.Frames > 0)
+        {
+          const std::vector<double> medians = lineup.InterleavedMilliseconds(
+            { actors[2], actors[3], actors[4] }, options.Rounds, options.Frames);
+          for (size_t f = 0; f < 3; ++f)
+          {
+            measurements[measurements.size() - 3 + f].Milliseconds = medians[f];
+          }
         }
       }
     }
@@ -146,7 +159,10 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
   section << "Stones (the height map resampled to " << options.HeightMapSize << "x"
           << options.HeightMapSize << ", DepthScale " << options.DepthScale
           << ") on a sphere of radius 0.5, a cylinder of radius 0.4 (its middle) and a torus, "
-          << Facets << " facets around each, three views each, in a " << options.Width << "x"
+          << FacetsList(options.Facets)
+          << " facets around each (a torus half as many around its tube), three views each, "
+             "in a "
+          << options.Width << "x"
           << options.Height
           << " window; the actors' default properties. Ground truth: the shape regenerated with 256 "
              "facets around and displaced (vtkReliefDisplacementFilter, edges of at most 0.5 "
@@ -155,41 +171,44 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
              "perfect). Every frame searches with LinearBinary 32+6, self-shadowing off; "
           << options.Frames << " timed frames x " << options.Rounds
           << " interleaved rounds per row (median).\n\n";
-  section << "| shape | azimuth, elevation | frame | silhouette error | wrong pixels | "
+  section << "| shape | facets | azimuth, elevation | frame | silhouette error | wrong pixels | "
              "samples/pixel (mean) | ms/frame |\n"
-          << "| --- | --- | --- | ---: | ---: | ---: | ---: |\n"
+          << "| --- | ---: | --- | --- | ---: | ---: | ---: | ---: |\n"
           << std::setprecision(3);
   for (const Measurement& m : measurements)
   {
-    section << "| " << m.Shape << " | " << m.Azimuth << ", " << m.Elevation << " | " << m.Frame
+    section << "| " << m.Shape << " | " << m.Facets << " | " << m.Azimuth << ", " << m.Elevation << " | " << m.Frame
             << " | " << m.SilhouetteError << " | " << m.WrongPixels << " | " << m.MeanSamples
             << " | " << m.Milliseconds << " |\n";
   }
-  // per frame over all views: the worst silhouette error, the mean samples and the mean
-  // time against the flat frame's in the same views
-  std::map<std::string, std::vector<const Measurement*>> byFrame;
+  // per number of facets and frame over all views: the worst silhouette error, the mean
+  // samples and the mean time against the flat frame's in the same views
+  std::map<std::pair<int, std::string>, std::vector<const Measurement*>> byFrame;
   for (const Measurement& m : measurements)
   {
-    byFrame[m.Frame].push_back(&m);
+    byFrame[{ m.Facets, m.Frame }].push_back(&m);
   }
-  const auto& flat = byFrame[Frames()[0]];
-  section << "\nOver the nine views:";
-  for (const std::string& frame : Frames())
+  for (int facets : options.Facets)
   {
-    const auto& rows = byFrame[frame];
-    double worst = 0.0;
-    double samples = 0.0;
-    double timeRatio = 0.0;
-    for (size_t k = 0; k < rows.size(); ++k)
+    const auto& flat = byFrame[{ facets, Frames()[0] }];
+    section << "\nOver the nine views at " << facets << " facets:";
+    for (const std::string& frame : Frames())
     {
-      worst = std::max(worst, rows[k]->SilhouetteError);
-      samples += rows[k]->MeanSamples / rows.size();
-      timeRatio += flat[k]->Milliseconds > 0.0
-        ? rows[k]->Milliseconds / flat[k]->Milliseconds / rows.size()
-        : 0.0;
+      const auto& rows = byFrame[{ facets, frame }];
+      double worst = 0.0;
+      double samples = 0.0;
+      double timeRatio = 0.0;
+      for (size_t k = 0; k < rows.size(); ++k)
+      {
+        worst = std::max(worst, rows[k]->SilhouetteError);
+        samples += rows[k]->MeanSamples / rows.size();
+        timeRatio += flat[k]->Milliseconds > 0.0
+          ? rows[k]->Milliseconds / flat[k]->Milliseconds / rows.size()
+          : 0.0;
+      }
+      section << " " << frame << ", silhouette error at most " << worst << ", " << samples
+              << " samples a pixel, " << timeRatio << "x the flat frame's time;";
     }
-    section << " " << frame << ", silhouette error at most " << worst << ", " << samples
-            << " samples a pixel, " << timeRatio << "x the flat frame's time;";
   }
   section << " (target: a silhouette error of at most 0.25 for the quadric frame).\n\n";
 
@@ -197,16 +216,19 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
   {
     std::filesystem::create_directories(options.ImageDirectory);
     std::vector<ReliefChart::Series> series;
-    for (const std::string& frame : Frames())
+    for (int facets : options.Facets)
     {
-      ReliefChart::Series line;
-      line.Name = frame;
-      for (const Measurement* m : byFrame[frame])
+      for (const std::string& frame : Frames())
       {
-        line.X.push_back(m->SilhouetteError);
-        line.Y.push_back(m->Milliseconds);
+        ReliefChart::Series line;
+        line.Name = frame + ", " + std::to_string(facets) + " facets";
+        for (const Measurement* m : byFrame[{ facets, frame }])
+        {
+          line.X.push_back(m->SilhouetteError);
+          line.Y.push_back(m->Milliseconds);
+        }
+        series.push_back(line);
       }
-      series.push_back(line);
     }
     ReliefChart::Axes axes;
     axes.Title = "Curved surfaces: silhouette error against cost";
