@@ -70,16 +70,18 @@ def check_sweep(text, parameter):
 
 
 def check_quadric(text):
-    """The quadric study: a row per shape, view and frame, each figure finite."""
+    """The quadric study: a row per shape, number of facets (quick: one), view and frame,
+    each figure finite."""
     if "## Curved surfaces" not in text:
         fail("no quadric study in the results")
     rows = [line.split("|")[1:-1] for line in text.splitlines()
-            if line.startswith("| ") and line.count("|") == 8
-            and line.split("|")[3].strip() in QUADRIC_FRAMES]
+            if line.startswith("| ") and line.count("|") == 9
+            and line.split("|")[4].strip() in QUADRIC_FRAMES]
     if len(rows) != 3 * 3 * len(QUADRIC_FRAMES):
         fail("the quadric study has %d rows, not 27" % len(rows))
     for cells in rows:
-        for cell in cells[3:]:
+        figure(cells[1])
+        for cell in cells[4:]:
             figure(cell)
 
 

@@ -425,7 +425,7 @@ std::string Study(const Options& requested)
           << ReliefChart::LogFloor << " when below). Depth errors are in units of DepthScale; "
           << options.Frames << " timed frames x " << options.Rounds
           << " interleaved rounds per row (median). GPU MB: for relief, the textures the mapper "
-             "reports (GetTextureBytes: 16-bit depth with its mipmaps, the method's "
+             "reports (GetTextureBytes: the 16-bit depth, the method's "
              "acceleration image); for meshes, vertex and index buffers.\n\n"
           << convergence.str() << Table(rows) << "\n" << TargetCheck(rows);
   if (!options.ImageDirectory.empty())
