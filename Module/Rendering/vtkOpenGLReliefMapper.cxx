@@ -676,7 +676,7 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   this->LightThroughRelief(fragmentSource, lightComplexity, actor);
   // VTK reads the actor's textures with implicit derivatives, which jump wherever the
   // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
-  // them at the level of the entry coordinates, as the relief itself is read.
+  // them at the level of the entry coordinates.
   const int textureReads =
     vtkReliefShaderRewrites::ReadTexturesThrough(fragmentSource, "reliefTextureAtRay");
   if (textureReads == 0 && actor->GetTexture() && !this->WarnedTextureReads)
@@ -796,9 +796,10 @@ void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader
 void vtkOpenGLReliefMapper::LightThroughRelief(
   std::string& fragmentSource, int lightComplexity, vtkActor* actor)
 {
+  const bool shadowsLost = this->SelfShadowing && lightComplexity >= 2;
   if (lightComplexity < 1 ||
     vtkReliefShaderRewrites::LightThrough(fragmentSource, "reliefDiffuse", "reliefShadow") > 0 ||
-    this->WarnedUnmatchedLighting)
+    this->WarnedUnmatchedLighting || !(shadowsLost || this->FootprintShading))
   {
     return;
   }

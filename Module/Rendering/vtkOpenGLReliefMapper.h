@@ -49,10 +49,10 @@
 class vtkImageData;
 class vtkOpenGLReliefTextures;
 class vtkReliefAccelerationFilter;
-class vtkRenderWindow;
 class vtkReliefSearchMethod;
 class vtkReliefTangentFrameFilter;
 class vtkReliefTextureFilter;
+class vtkRenderWindow;
 
 class VTKRELIEFRENDERING_EXPORT vtkOpenGLReliefMapper : public vtkOpenGLPolyDataMapper
 {
@@ -175,7 +175,9 @@ public:
    * are searched too and the lights' diffuse terms averaged over their hits' normals
    * (about 5 times the samples where it spans 0.7 texels or more). Off, the normal at
    * the hit alone lights the pixel: minified or oblique relief aliases, as point-sampled
-   * geometry does. Default on.
+   * geometry does. Colour and self-shadows are taken at the centre's hit; a normal map
+   * given with the heights (UseInputNormals) is read filtered instead, without the
+   * footprint's rays. Default on.
    */
   void SetFootprintShading(bool enabled);
   vtkGetMacro(FootprintShading, bool);
@@ -229,7 +231,8 @@ public:
   ///@{
   /**
    * Shaded (default), or SampleCount: each covered pixel's red channel is
-   * min(255, height samples the view-ray search took) / 255, green and blue 0.
+   * min(255, height samples the pixel took) / 255, green and blue 0: its view ray's,
+   * and with FootprintShading those of the four rays through it.
    */
   void SetDisplayMode(int mode);
   vtkGetMacro(DisplayMode, int);

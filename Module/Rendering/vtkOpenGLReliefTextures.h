@@ -3,8 +3,8 @@
  * @brief   the relief mappers' textures: encoding, upload, acceleration images, sharing
  *
  * Owned by vtkOpenGLReliefMapper, as VTK's mappers own helpers for their GPU data. It
- * gives the mapper what the relief shader reads: the 16-bit depth texture with its
- * mipmaps (the searches read it, and the shading rebuilds the relief normal from it), a
+ * gives the mapper what the relief shader reads: the 16-bit depth texture at full
+ * resolution (the searches read it, and the shading takes the relief normal from it), a
  * normal map's (nx, ny) when one was given with the heights, and the acceleration image
  * of the search method (vtkReliefSearchMethod: the filter that makes it, its encoding,
  * its uniforms), precomputed or built here.

@@ -74,9 +74,13 @@ int RewriteEach(std::string& source, const std::string& before, const std::strin
       ++end;
     }
     const std::string captured = source.substr(at + before.size(), end - at - before.size());
-    if (source.compare(end, after.size(), after) != 0 || (captures && captured.empty()))
+    // a whole call: not the tail of a longer name, its argument and closing all there
+    const bool partOfName = at > 0 &&
+      (std::isalnum(static_cast<unsigned char>(source[at - 1])) != 0 || source[at - 1] == '_');
+    if (partOfName || source.compare(end, after.size(), after) != 0 ||
+      (captures && captured.empty()))
     {
-      at = end; // not this call: search on
+      ++at; // not this one: search on from the next character
       continue;
     }
     const std::string replacement = rewrite(captured);

@@ -68,8 +68,9 @@ public:
    * max(0, dot(normal, toLight)) replaced by `diffuse`(toLight), and weighted by
    * `visibility`(toLight) for directional and positional lights (the specular term
    * follows through sign(df)); the headlight's by `diffuse`(0, 0, 1) alone (it shines
-   * along the view: no self-shadow). Returns the number of terms replaced, one per
-   * light: 0 where the code did not match.
+   * along the view: no self-shadow; VTK raises that same term to the specular power, so
+   * its highlight follows the footprint's cosine too). Returns the number of terms
+   * replaced, one per light: 0 where the code did not match.
    */
   static int LightThrough(std::string& fragment, const char* diffuse, const char* visibility);
 

@@ -302,6 +302,8 @@ std::string Study(const Options& requested)
   reliefMapper->SetDepthScale(options.DepthScale);
   // the stock mapper casts no shadows: both are lit alike, without them
   reliefMapper->SetSelfShadowing(false);
+  // the searches' accuracy and cost; footprint shading has its own study
+  reliefMapper->SetFootprintShading(false);
   auto reliefActor = ReliefScene::ReliefActor(reliefMapper, "stones_color.png");
 
   auto meshActor = [&](vtkPolyData* mesh) {
@@ -412,7 +414,8 @@ std::string Study(const Options& requested)
           << options.HeightMapSize << ", one tile on the unit square filling the view, DepthScale "
           << options.DepthScale << ", seen " << options.Angle << " degrees from its normal in a "
           << options.Width << "x" << options.Height
-          << " window; one scene light, self-shadowing off (the stock mapper casts none). "
+          << " window; one scene light, self-shadowing off (the stock mapper casts none), "
+             "footprint shading off (its own study measures it). "
              "Ground truth: vtkReliefDisplacementFilter with edges of at most 0.5 texel ("
           << truthMesh->GetNumberOfPolys()
           << " triangles) drawn by vtkPolyDataMapper with the same camera, clipping range, "

@@ -49,6 +49,7 @@ void SetSearch(vtkOpenGLReliefMapper* mapper, vtkPolyData* surface, vtkImageData
   mapper->SetDepthScale(depthScale);
   mapper->SetSearchMethod(method);
   mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
+  mapper->SetFootprintShading(false); // the frames' samples alone
   mapper->SetLinearSteps(32);
   mapper->SetBinarySteps(6);
 }

@@ -110,13 +110,15 @@ std::vector<Measurement> Measure(const Options& options)
         mapper->SetHeightMapData(heights);
         mapper->SetDepthScale(options.DepthScale);
         mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
+        mapper->SetFootprintShading(false); // the frames' samples alone
         mapper->SetLinearSteps(32);
         mapper->SetBinarySteps(6);
       }
       // the actors' default properties: the mappers decide which faces carry relief
-      const std::vector<vtkSmartPointer<vtkActor>> actors = { ReliefScene::ReliefActor(truthMapper, ""),
-        ReliefScene::ReliefActor(polygonMapper, ""), ReliefScene::ReliefActor(flat, ""),
-        ReliefScene::ReliefActor(approximate, ""), ReliefScene::ReliefActor(exact, "") };
+      const std::vector<vtkSmartPointer<vtkActor>> actors = {
+        ReliefScene::ReliefActor(truthMapper, ""), ReliefScene::ReliefActor(polygonMapper, ""),
+        ReliefScene::ReliefActor(flat, ""), ReliefScene::ReliefActor(approximate, ""),
+        ReliefScene::ReliefActor(exact, "") };
       ReliefScene::Lineup lineup(window, renderer, actors);
       for (const auto& view : Views)
       {
@@ -162,10 +164,9 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
           << FacetsList(options.Facets)
           << " facets around each (a torus half as many around its tube), three views each, "
              "in a "
-          << options.Width << "x"
-          << options.Height
-          << " window; the actors' default properties. Ground truth: the shape regenerated with 256 "
-             "facets around and displaced (vtkReliefDisplacementFilter, edges of at most 0.5 "
+          << options.Width << "x" << options.Height
+          << " window; the actors' default properties. Ground truth: the shape regenerated "
+             "with 256 facets around and displaced (vtkReliefDisplacementFilter, edges of at most 0.5 "
              "texel). Silhouette error: pixels whose coverage differs from the truth's, over "
              "the same count for the bare polygons (1: no better than the polygons, 0: "
              "perfect). Every frame searches with LinearBinary 32+6, self-shadowing off; "
@@ -177,7 +178,8 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
           << std::setprecision(3);
   for (const Measurement& m : measurements)
   {
-    section << "| " << m.Shape << " | " << m.Facets << " | " << m.Azimuth << ", " << m.Elevation << " | " << m.Frame
+    section << "| " << m.Shape << " | " << m.Facets << " | " << m.Azimuth << ", "
+            << m.Elevation << " | " << m.Frame
             << " | " << m.SilhouetteError << " | " << m.WrongPixels << " | " << m.MeanSamples
             << " | " << m.Milliseconds << " |\n";
   }

@@ -210,6 +210,12 @@ std::vector<Measurement> Measure(const Options& options)
     relief->SetInputData(heights);
     relief->Update();
     const int mapSize = heights->GetDimensions()[0];
+    // one mapper for all views: its cone map is built once per height map
+    vtkNew<vtkOpenGLReliefMapper> reliefMapper;
+    reliefMapper->SetHeightMapData(heights);
+    reliefMapper->SetDepthScale(options.DepthTexels);
+    reliefMapper->SetSelfShadowing(false);
+    reliefMapper->SetSearchMethodToConeStep();
     for (const View& view : views)
     {
       // beyond 2 texels a pixel, fewer pixels: as many texels in view as at 2
@@ -225,12 +231,7 @@ std::vector<Measurement> Measure(const Options& options)
         halfHeight / std::cos(radians) + options.DepthTexels * std::tan(radians) + 4.0;
       const double reach = std::max(halfWidth, halfDepth) + options.DepthTexels;
 
-      vtkNew<vtkOpenGLReliefMapper> reliefMapper;
       reliefMapper->SetInputData(Patch(halfWidth, halfDepth, mapSize, false));
-      reliefMapper->SetHeightMapData(heights);
-      reliefMapper->SetDepthScale(options.DepthTexels);
-      reliefMapper->SetSelfShadowing(false);
-      reliefMapper->SetSearchMethodToConeStep();
       vtkNew<vtkReliefDisplacementFilter> displaced;
       displaced->SetInputData(Patch(halfWidth, halfDepth, mapSize, true));
       displaced->SetReliefData(relief->GetOutput());

@@ -285,6 +285,7 @@ std::vector<Error> Errors(
   mapper->SetHeightMapData(scene.Heights);
   mapper->SetDepthScale(scene.DepthScale);
   mapper->SetSelfShadowing(false); // the stock mapper casts no shadows
+  mapper->SetFootprintShading(false); // the search's samples alone
   auto reliefActor = ReliefScene::ReliefActor(mapper, "");
   // framed on the coarse surface alone: the truth's sunken bounds would aim the camera
   // below the surface, and behind it at grazing angles

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <vector>
 
 int TestReliefFootprintShading(int, char*[])
 {
@@ -21,7 +22,14 @@ int TestReliefFootprintShading(int, char*[])
   options.TexelsPerPixel = { 4.0 };
   options.Maps = { "steps" };
   int failures = 0;
-  for (const ReliefShadingStudy::Measurement& m : ReliefShadingStudy::Measure(options))
+  const std::vector<ReliefShadingStudy::Measurement> measurements =
+    ReliefShadingStudy::Measure(options);
+  if (measurements.size() != 2)
+  {
+    std::cerr << "FAILED: " << measurements.size() << " views measured, not 2\n";
+    ++failures;
+  }
+  for (const ReliefShadingStudy::Measurement& m : measurements)
   {
     std::cout << m.Angle << " degrees, " << m.TexelsPerPixel << " texels a pixel: bias "
               << m.LuminanceBias << ", RMSE " << m.Rmse << " (hit only " << m.HitLuminanceBias

@@ -106,7 +106,7 @@ constexpr double RequiredShare = 0.97;
 constexpr int MinimumCompared = 300;
 
 // What the mirror reads, made from the relief texture the mapper uploaded by the filters
-// the mapper runs (vtkOpenGLReliefTextures::BuildAcceleration: a setting it gives its
+// the mapper runs (vtkOpenGLReliefTextures::UpdateAcceleration: a setting it gives its
 // filter must be given here too).
 struct Maps
 {

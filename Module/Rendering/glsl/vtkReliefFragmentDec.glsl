@@ -1,5 +1,6 @@
-// vtkRelief fragment declarations: uniforms, the interpolated frame, the search, and
-// the per-light shadow query used by VTK's lighting code.
+// vtkRelief fragment declarations: uniforms, the interpolated frame, the search, the
+// footprint's normals and the per-light diffuse term and shadow query that VTK's
+// lighting code is made to call (vtkReliefShaderRewrites::LightThrough).
 uniform sampler2D reliefDepthTexture; // vtkReliefTextureFilter's depth, 16-bit
 #ifdef RELIEF_INPUT_NORMALS
 uniform sampler2D reliefNormalTexture; // (nx, ny) of the normal map given with the heights
@@ -35,7 +36,7 @@ vec2 reliefGradY;
 // Depths are read at full resolution, whatever the footprint: the searches intersect and
 // the shading lights the field itself, never a mipmap's average of it, which lowers steps
 // and tilts their walls away from the viewer (too dark, or too bright, under minification
-// and at oblique views: Documentation/benchmarks.md, shading).
+// and at oblique views: Documentation/results.md, shading).
 #define RELIEF_DEPTH(uv) textureLod(reliefDepthTexture, uv, 0.0).r
 #define RELIEF_DEPTH_SIZE reliefTextureSize
 // a cell's corners (i, j), (i+1, j), (i, j+1), (i+1, j+1), the texture repeating
@@ -156,7 +157,7 @@ const vec2 reliefRotatedGrid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.1
 // of the rays through four points of the pixel (reliefRotatedGrid), each searched and
 // lit where it hits; in between, both, weighted (no seam). Point-sampled normals alias;
 // a mipmap's normal lights a step's walls for the whole footprint and seen obliquely
-// averages away what faces the viewer (Documentation/benchmarks.md, shading). The
+// averages away what faces the viewer (Documentation/results.md, shading). The
 // footprint is the texels between neighbouring pixels' entries (the entry's
 // derivatives), measured along its shorter side. `samples` counts on. A normal map is
 // read filtered over the footprint already (reliefTextureAtRay).
