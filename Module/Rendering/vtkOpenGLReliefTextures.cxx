@@ -190,10 +190,10 @@ vtkImageData* vtkOpenGLReliefTextures::UpdateRelief(
     settings->GetComponent(), settings->GetDepthToTexelRatio(),
     settings->GetUseInputNormals() != 0 };
   auto& registry = SharedReliefs();
-  ForgetReleased(registry);
   std::shared_ptr<SharedRelief> shared = registry[key].lock();
   if (!shared)
   {
+    ForgetReleased(registry); // when an entry is made, not at every frame
     shared = std::make_shared<SharedRelief>();
     shared->Window = window;
     shared->Filter->SetInputConvention(std::get<3>(key));
@@ -302,10 +302,10 @@ bool vtkOpenGLReliefTextures::UpdateAcceleration(vtkOpenGLRenderWindow* window,
   const AccelerationKey key{ this->Relief.get(), method.Id, setting, precomputed,
     precomputed ? precomputed->GetMTime() : 0 };
   auto& registry = SharedAccelerations();
-  ForgetReleased(registry);
   std::shared_ptr<SharedAcceleration> shared = registry[key].lock();
   if (!shared)
   {
+    ForgetReleased(registry); // when an entry is made, not at every frame
     shared = std::make_shared<SharedAcceleration>();
     shared->Relief = this->Relief;
     shared->Image = precomputed;

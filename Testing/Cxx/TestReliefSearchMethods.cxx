@@ -3,6 +3,7 @@
 // that does not fit is reported once and the search falls back to LinearBinary; a
 // height map larger than OpenGL takes is reported with the limit.
 #include "ReliefEventRecorder.h"
+#include "ReliefLiveGLObjects.h"
 #include "ReliefScene.h"
 
 #include "vtkConeStepMapFilter.h"
@@ -13,34 +14,12 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <cstring>
 #include <iostream>
 
 namespace
 {
-// GL objects alive in the window's context, counted by name.
-int LivePrograms()
-{
-  int count = 0;
-  for (GLuint name = 1; name < 4096; ++name)
-  {
-    count += glIsProgram(name) ? 1 : 0;
-  }
-  return count;
-}
-
-int LiveTextures()
-{
-  int count = 0;
-  for (GLuint name = 1; name < 4096; ++name)
-  {
-    count += glIsTexture(name) ? 1 : 0;
-  }
-  return count;
-}
-
 // Sum of the red channel after a render: the sample counts in SampleCount display mode.
 long RedSum(vtkRenderWindow* window)
 {
@@ -98,8 +77,8 @@ int TestReliefSearchMethods(int, char*[])
     window->Render();
     check(mapper->GetActiveSearchMethod() == method, "each method is the one searched with");
   }
-  const int programs = LivePrograms();
-  const int textures = LiveTextures();
+  const int programs = ReliefLiveGLObjects::Programs();
+  const int textures = ReliefLiveGLObjects::Textures();
   for (int round = 0; round < 10; ++round)
   {
     for (int method : methods)
@@ -108,10 +87,10 @@ int TestReliefSearchMethods(int, char*[])
       window->Render();
     }
   }
-  std::cout << "GL programs " << programs << " -> " << LivePrograms() << ", textures " << textures
-            << " -> " << LiveTextures() << "\n";
-  check(LivePrograms() == programs, "switching methods leaks no shader programs");
-  check(LiveTextures() == textures, "switching methods leaks no textures");
+  std::cout << "GL programs " << programs << " -> " << ReliefLiveGLObjects::Programs()
+            << ", textures " << textures << " -> " << ReliefLiveGLObjects::Textures() << "\n";
+  check(ReliefLiveGLObjects::Programs() == programs, "switching methods leaks no shader programs");
+  check(ReliefLiveGLObjects::Textures() == textures, "switching methods leaks no textures");
   check(messages->Events.empty(), "switching methods is silent");
 
   // nothing of one method's state leaks into the next: after all the switching, each

@@ -6,6 +6,7 @@
 // by four is reported once; and the textures go with the last mapper that releases them.
 // No baseline image: renders are compared.
 #include "ReliefEventRecorder.h"
+#include "ReliefLiveGLObjects.h"
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -18,7 +19,6 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -42,12 +42,7 @@ vtkSmartPointer<vtkImageData> Bumps()
 int LiveTextures(vtkRenderWindow* window)
 {
   window->MakeCurrent();
-  int count = 0;
-  for (GLuint name = 1; name < 4096; ++name)
-  {
-    count += glIsTexture(name) ? 1 : 0;
-  }
-  return count;
+  return ReliefLiveGLObjects::Textures();
 }
 }
 
