@@ -35,6 +35,8 @@ constexpr int ProgressSlices = 10;
 // 1 - cos^2 of the angle between the columns (x^2) and (y^2) of Eq. 2 below which the
 // system is taken as singular: neighbours along one line through the point, or none.
 constexpr double SingularSine2 = 1e-9;
+// Copies of a point whose normals differ by more than about a degree stand on a crease.
+constexpr double CreaseCosine = 0.9998;
 
 // The triangles around each point, in compressed rows.
 struct PointTriangles
@@ -44,26 +46,36 @@ struct PointTriangles
   std::vector<vtkIdType> Triangles; // triangle indices
 };
 
-// The triangles around each point, coincident points taken as one (`merged`: a point's
-// stand-in), so that a texture seam's two copies of a point share one neighbourhood.
-PointTriangles TrianglesAroundPoints(vtkPolyData* mesh, const std::vector<vtkIdType>& merged)
+// The three point ids of every triangle (the tangent frame filter triangulates: nothing
+// else is left).
+std::vector<vtkIdType> TriangleCorners(vtkPolyData* mesh)
 {
-  PointTriangles incidence;
-  const vtkIdType pointCount = mesh->GetNumberOfPoints();
-  incidence.Corners.reserve(3 * static_cast<size_t>(mesh->GetNumberOfPolys()));
+  std::vector<vtkIdType> corners;
+  corners.reserve(3 * static_cast<size_t>(mesh->GetNumberOfPolys()));
   auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
   for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
   {
     vtkIdType size;
     const vtkIdType* ids;
     polys->GetCurrentCell(size, ids);
-    if (size == 3) // the tangent frame filter triangulates: nothing else is left
+    if (size == 3)
     {
-      for (int corner = 0; corner < 3; ++corner)
-      {
-        incidence.Corners.push_back(merged[ids[corner]]);
-      }
+      corners.insert(corners.end(), ids, ids + 3);
     }
+  }
+  return corners;
+}
+
+// The triangles around each point, coincident points taken as one (`merged`: a point's
+// stand-in), so that a texture seam's two copies of a point share one neighbourhood.
+PointTriangles TrianglesAroundPoints(vtkPolyData* mesh, const std::vector<vtkIdType>& merged)
+{
+  PointTriangles incidence;
+  const vtkIdType pointCount = mesh->GetNumberOfPoints();
+  incidence.Corners = TriangleCorners(mesh);
+  for (vtkIdType& corner : incidence.Corners)
+  {
+    corner = merged[corner];
   }
   incidence.Offsets.assign(static_cast<size_t>(pointCount) + 1, 0);
   for (vtkIdType corner : incidence.Corners)
@@ -171,6 +183,113 @@ bool FitQuadric(const glm::dvec3& origin, const glm::dvec3& normal, const glm::d
   quadric[1] = (yyz * xxxx - xxz * xxyy) / determinant;
   return std::isfinite(quadric[0]) && std::isfinite(quadric[1]);
 }
+
+// A point's frame and quadric, for the hull's lift.
+struct PointQuadric
+{
+  glm::dvec3 Position;
+  glm::dvec3 Normal;
+  glm::dvec3 Tangent;
+  glm::dvec3 Bitangent;
+  double A = 0.0;
+  double B = 0.0;
+};
+
+PointQuadric PointQuadricOf(vtkPolyData* mesh, vtkDataArray* quadrics, vtkIdType p)
+{
+  PointQuadric point;
+  double position[3];
+  mesh->GetPoint(p, position);
+  point.Position = glm::dvec3(position[0], position[1], position[2]);
+  point.Normal = TupleOf(mesh->GetPointData()->GetNormals(), p);
+  point.Normal /= std::max(glm::length(point.Normal), 1e-300);
+  const glm::dvec3 tangent = TupleOf(mesh->GetPointData()->GetTangents(), p);
+  point.Tangent = tangent - point.Normal * glm::dot(point.Normal, tangent);
+  point.Tangent /= std::max(glm::length(point.Tangent), 1e-300);
+  point.Bitangent = glm::cross(point.Normal, point.Tangent);
+  point.A = quadrics->GetComponent(p, 0);
+  point.B = quadrics->GetComponent(p, 1);
+  return point;
+}
+
+// How far the quadric at `point` rises along its normal over the tangent-plane step
+// `edge`: a x^2 + b y^2 (negative where it bends away from the normal).
+double Rise(const PointQuadric& point, const glm::dvec3& edge)
+{
+  const double x = glm::dot(edge, point.Tangent);
+  const double y = glm::dot(edge, point.Bitangent);
+  return point.A * x * x + point.B * y * y;
+}
+
+// The most the curved surface rises above a triangle: over the edge from p to q it
+// stands -s (1 - s) Q(q - p) above the chord (Q the mean of both ends' rises), so over
+// the triangle, with barycentric coordinates l, sum l_i l_j w_ij with w_ij = -Q_ij, at
+// most max(w) / 3. The shader computes the same (vtkReliefQuadricFrame.glsl).
+double TriangleRise(const PointQuadric corners[3])
+{
+  double most = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const PointQuadric& from = corners[k];
+    const PointQuadric& to = corners[(k + 1) % 3];
+    const glm::dvec3 edge = to.Position - from.Position;
+    most = std::max(most, -0.5 * (Rise(from, edge) + Rise(to, -edge)));
+  }
+  return most / 3.0;
+}
+
+// The lift of each point (vtkLocalQuadricFilter::HullLiftArrayName): the most the
+// surface rises above any triangle around its position, shared by every copy there so
+// that the hull stays closed; 0 where the copies' normals part (a crease: lifted apart,
+// they would open a crack), or where the rise is not finite.
+std::vector<float> HullLifts(vtkPolyData* mesh, vtkDataArray* quadrics)
+{
+  const vtkIdType pointCount = mesh->GetNumberOfPoints();
+  std::vector<vtkIdType> position = vtkReliefCoincidentPoints(mesh);
+  if (position.empty())
+  {
+    position.resize(static_cast<size_t>(pointCount));
+    std::iota(position.begin(), position.end(), 0);
+  }
+  const std::vector<vtkIdType> corners = TriangleCorners(mesh);
+  const vtkIdType triangleCount = static_cast<vtkIdType>(corners.size() / 3);
+  std::vector<double> rises(static_cast<size_t>(triangleCount));
+  vtkSMPTools::For(0, triangleCount, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      const vtkIdType* ids = corners.data() + 3 * t;
+      const PointQuadric triangle[3] = { PointQuadricOf(mesh, quadrics, ids[0]),
+        PointQuadricOf(mesh, quadrics, ids[1]), PointQuadricOf(mesh, quadrics, ids[2]) };
+      rises[t] = TriangleRise(triangle);
+    }
+  });
+  std::vector<double> lift(static_cast<size_t>(pointCount), 0.0);
+  for (vtkIdType t = 0; t < triangleCount; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double& shared = lift[position[corners[3 * t + k]]];
+      shared = std::isfinite(rises[t]) ? std::max(shared, rises[t]) : shared;
+    }
+  }
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  for (vtkIdType p = 0; p < pointCount; ++p)
+  {
+    const vtkIdType shared = position[p];
+    const glm::dvec3 normal = glm::normalize(TupleOf(normals, p));
+    const glm::dvec3 sharedNormal = glm::normalize(TupleOf(normals, shared));
+    if (!(glm::dot(normal, sharedNormal) > CreaseCosine))
+    {
+      lift[shared] = 0.0;
+    }
+  }
+  std::vector<float> lifts(static_cast<size_t>(pointCount));
+  for (vtkIdType p = 0; p < pointCount; ++p)
+  {
+    lifts[p] = static_cast<float>(lift[position[p]]);
+  }
+  return lifts;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -250,12 +369,30 @@ int vtkLocalQuadricFilter::RequestData(
 
   output->ShallowCopy(mesh);
   output->GetPointData()->AddArray(quadrics);
+  output->GetPointData()->AddArray(vtk::TakeSmartPointer(NewHullLifts(output)));
   this->NumberOfFallbacks = fallbacks;
   vtkNew<vtkIdTypeArray> fallbackCount;
   fallbackCount->SetName(FallbackCountArrayName());
   fallbackCount->InsertNextValue(this->NumberOfFallbacks);
   output->GetFieldData()->AddArray(fallbackCount);
   return 1;
+}
+
+vtkFloatArray* vtkLocalQuadricFilter::NewHullLifts(vtkPolyData* framed)
+{
+  vtkPointData* pointData = framed ? framed->GetPointData() : nullptr;
+  vtkDataArray* quadrics = pointData ? pointData->GetArray(QuadricArrayName()) : nullptr;
+  if (!quadrics || quadrics->GetNumberOfComponents() != 2 || !pointData->GetNormals() ||
+    !pointData->GetTangents())
+  {
+    return nullptr;
+  }
+  const std::vector<float> lift = HullLifts(framed, quadrics);
+  vtkFloatArray* lifts = vtkFloatArray::New();
+  lifts->SetName(HullLiftArrayName());
+  lifts->SetNumberOfTuples(framed->GetNumberOfPoints());
+  std::copy(lift.begin(), lift.end(), lifts->GetPointer(0));
+  return lifts;
 }
 
 void vtkLocalQuadricFilter::PrintSelf(ostream& os, vtkIndent indent)

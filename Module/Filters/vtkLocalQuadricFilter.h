@@ -27,9 +27,21 @@
  * not finite, the point gets a = b = 0 (the tangent plane, flat relief) and is counted
  * in the one-value field array "ReliefQuadricFallbacks".
  *
+ * The polygons of a coarse mesh sag inside the curved surface their quadrics describe,
+ * and no fragment exists outside them: vtkOpenGLQuadricReliefMapper draws a hull
+ * lifted off each point along its normal, far enough that the hull encloses the
+ * quadric surface over every triangle around it. Over the edge from p to q that surface
+ * stands -s (1 - s) Q above the chord (s in [0, 1], Q the mean of both ends' quadrics
+ * a x^2 + b y^2 evaluated on q - p); over a triangle, with barycentric coordinates l,
+ * sum l_i l_j w_ij with w_ij = -Q_ij, at most max(w) / 3: a point's lift is the
+ * greatest of these over its triangles, shared by the copies of a point at one
+ * position; 0 on a crease (copies whose normals part), where lifting the copies apart
+ * would open a crack.
+ *
  * Output: the tangent frame filter's output (points, triangles, normals, tangents,
- * "ReliefTextureScale") plus the point array "ReliefQuadric" (float, two components:
- * a, b). A mesh without texture coordinates or polygons gives the tangent frame
+ * "ReliefTextureScale") plus the point arrays "ReliefQuadric" (float, two components:
+ * a, b) and "ReliefQuadricLift" (float, the hull's lift, model units, 0 or more). A mesh
+ * without texture coordinates or polygons gives the tangent frame
  * filter's error, forwarded as this filter's, and passes through unchanged. Points are
  * fitted in parallel with vtkSMPTools; progress is reported between slices of points.
  */
@@ -38,6 +50,9 @@
 
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkReliefFiltersModule.h" // For export macro
+#include "vtkWrappingHints.h"       // For VTK_NEWINSTANCE
+
+class vtkFloatArray;
 
 class VTKRELIEFFILTERS_EXPORT vtkLocalQuadricFilter : public vtkPolyDataAlgorithm
 {
@@ -48,6 +63,9 @@ public:
 
   /// Name of the two-component point array holding (a, b).
   static const char* QuadricArrayName() { return "ReliefQuadric"; }
+
+  /// Name of the point array holding the hull's lift along the normal, model units.
+  static const char* HullLiftArrayName() { return "ReliefQuadricLift"; }
 
   /// Name of the one-value field array counting the points that fell back to a = b = 0.
   static const char* FallbackCountArrayName() { return "ReliefQuadricFallbacks"; }
@@ -61,6 +79,13 @@ public:
   vtkSetClampMacro(NeighbourhoodRings, int, 1, 2);
   vtkGetMacro(NeighbourhoodRings, int);
   ///@}
+
+  /**
+   * The hull's lifts (HullLiftArrayName()) of a mesh that carries quadrics
+   * (QuadricArrayName()), point normals and tangents, as this filter's output does; null
+   * when it lacks one of them. For quadrics computed otherwise.
+   */
+  VTK_NEWINSTANCE static vtkFloatArray* NewHullLifts(vtkPolyData* framed);
 
   /// Points that fell back to a = b = 0 in the last update.
   vtkGetMacro(NumberOfFallbacks, vtkIdType);

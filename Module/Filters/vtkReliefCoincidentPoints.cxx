@@ -1,11 +1,15 @@
 #include "vtkReliefCoincidentPoints.h"
 
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
 #include "vtkStaticPointLocator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -45,10 +49,34 @@ std::vector<vtkIdType> vtkReliefCoincidentPoints(
   {
     return merged;
   }
+  // Each point goes to the lowest id within the tolerance, that one to its own, and so on:
+  // the same groups whatever the threads do (VTK 9.1's threaded MergePoints picks its
+  // stand-ins in whatever order its threads run, and a mesh's closedness changed from run
+  // to run with it).
   vtkNew<vtkStaticPointLocator> locator;
   locator->SetDataSet(mesh);
   locator->BuildLocator();
-  locator->MergePoints(1e-9 * mesh->GetLength(), merged.data());
+  const double tolerance = 1e-9 * mesh->GetLength();
+  vtkSMPThreadLocalObject<vtkIdList> nearby;
+  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+    vtkIdList* found = nearby.Local();
+    for (vtkIdType id = begin; id < end; ++id)
+    {
+      double point[3];
+      mesh->GetPoint(id, point); // the thread-safe form
+      locator->FindPointsWithinRadius(tolerance, point, found);
+      vtkIdType lowest = id;
+      for (vtkIdType k = 0; k < found->GetNumberOfIds(); ++k)
+      {
+        lowest = std::min(lowest, found->GetId(k));
+      }
+      merged[id] = lowest;
+    }
+  });
+  for (vtkIdType id = 0; id < count; ++id)
+  {
+    merged[id] = merged[merged[id]]; // lower ids are final already
+  }
   if (!normals || normals->GetNumberOfTuples() < count || maximumAngle >= 180.0)
   {
     return merged;

@@ -2,6 +2,7 @@
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkLocalQuadricFilter.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -11,12 +12,27 @@
 
 #include "vtkReliefQuadricFrame.h"
 #include "vtkReliefTangentBasis.h"
+#include "vtkReliefTriangleGS.h"
+
+#include "vtkActor.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkProperty.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
 
 vtkStandardNewMacro(vtkOpenGLQuadricReliefMapper);
 
 namespace
 {
 constexpr const char* QuadricAttribute = "reliefQuadricMC";
+constexpr const char* LiftAttribute = "reliefHullLiftMC";
+
+// A point array of one number per point.
+bool IsPointScalar(vtkAbstractArray* array, vtkPolyData* mesh)
+{
+  return vtkDataArray::SafeDownCast(array) && array->GetNumberOfComponents() == 1 &&
+    array->GetNumberOfTuples() == mesh->GetNumberOfPoints();
+}
 }
 
 vtkOpenGLQuadricReliefMapper::vtkOpenGLQuadricReliefMapper()
@@ -72,7 +88,7 @@ bool vtkOpenGLQuadricReliefMapper::UpdateReliefSurface()
   this->ComputesQuadrics = !this->HasUsableQuadrics(this->CurrentInput);
   if (!this->ComputesQuadrics)
   {
-    return this->Superclass::UpdateReliefSurface();
+    return this->Superclass::UpdateReliefSurface() && this->UpdateHullLifts();
   }
   // the quadric filter frames the mesh itself (vtkReliefTangentFrameFilter) and runs
   // again only when the mesh changes
@@ -85,11 +101,63 @@ bool vtkOpenGLQuadricReliefMapper::UpdateReliefSurface()
   return framed->GetPointData()->GetArray(vtkLocalQuadricFilter::QuadricArrayName()) != nullptr;
 }
 
+bool vtkOpenGLQuadricReliefMapper::UpdateHullLifts()
+{
+  vtkPolyData* framed = this->CurrentInput;
+  if (IsPointScalar(
+        framed->GetPointData()->GetAbstractArray(vtkLocalQuadricFilter::HullLiftArrayName()),
+        framed))
+  {
+    return true;
+  }
+  // quadrics of the user's own, without their lifts: lift the hull off them
+  if (this->LiftedFrom != framed || this->LiftedTime != framed->GetMTime())
+  {
+    this->LiftedFrom = framed;
+    this->LiftedTime = framed->GetMTime();
+    this->LiftedSurface->ShallowCopy(framed);
+    auto lifts = vtk::TakeSmartPointer(vtkLocalQuadricFilter::NewHullLifts(framed));
+    if (lifts)
+    {
+      this->LiftedSurface->GetPointData()->AddArray(lifts);
+    }
+  }
+  this->CurrentInput = this->LiftedSurface;
+  return true;
+}
+
 void vtkOpenGLQuadricReliefMapper::MapFrameAttributes(bool relief)
 {
   this->Superclass::MapFrameAttributes(relief);
   this->MapReliefAttribute(
     QuadricAttribute, relief ? vtkLocalQuadricFilter::QuadricArrayName() : nullptr);
+  this->MapReliefAttribute(
+    LiftAttribute, relief ? vtkLocalQuadricFilter::HullLiftArrayName() : nullptr);
+}
+
+void vtkOpenGLQuadricReliefMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+  if (this->DrawingRelief && cellBO.Program->IsUniformUsed("reliefHullClearance"))
+  {
+    cellBO.Program->SetUniformf(
+      "reliefHullClearance", static_cast<float>(this->ReliefTopDepth * this->DrawnDepthScale));
+  }
+}
+
+void vtkOpenGLQuadricReliefMapper::GetShaderTemplate(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::GetShaderTemplate(shaders, ren, actor);
+  // the hull's height over the quadric surface takes each triangle's three corners: a
+  // geometry shader, VTK's own where it draws edges
+  if (this->DrawingRelief && this->LastBoundBO == &this->Primitives[PrimitiveTris] &&
+    actor->GetProperty()->GetRepresentation() == VTK_SURFACE &&
+    shaders[vtkShader::Geometry]->GetSource().empty())
+  {
+    shaders[vtkShader::Geometry]->SetSource(vtkReliefTriangleGS);
+  }
 }
 
 bool vtkOpenGLQuadricReliefMapper::SupportsSearchMethod(const vtkReliefSearchMethod& method)

@@ -14,10 +14,23 @@
  * texture scale s_x, s_y (Eq. 8-9); the hit's true depth is written (s3.5); the lit
  * normal combines the relief's slope and the quadric's at the hit.
  *
- * Everything else is vtkOpenGLReliefMapper's. The quadrics are the input's point
- * array "ReliefQuadric" when it has a usable one (two components, one tuple a point);
- * otherwise the mapper computes them once per change of the mesh, with one warning if
- * the input's array was unusable. NaN coefficients are taken as a plane.
+ * Outlines: the polygons of a coarse mesh sag inside the curved surface, and no fragment
+ * exists outside them. The mapper draws a hull instead, each point lifted along its
+ * normal by vtkLocalQuadricFilter's lift (how far the quadric surface rises above the
+ * triangles around it) less the relief's clearance (how far below the surface the height
+ * map's highest texel lies), so that the hull encloses the relief; a geometry shader gives
+ * each fragment its height above the quadric surface (the interpolated lift less the
+ * surface's rise over the triangle), and its view ray starts where it first meets the
+ * quadric (A t^2 + B t = height), back toward the viewer from a polygon below it; a ray
+ * that passes above the quadric is discarded. So the relief, not the tessellation,
+ * decides the silhouette.
+ *
+ * Everything else is vtkOpenGLReliefMapper's. The quadrics are the input's point array
+ * "ReliefQuadric" when it has a usable one (two components, one tuple a point), and the
+ * lifts its "ReliefQuadricLift" or, without one, computed from those quadrics
+ * (vtkLocalQuadricFilter::NewHullLifts); otherwise the mapper computes both once
+ * per change of the mesh, with one warning if the input's quadric array was unusable.
+ * NaN coefficients are taken as a plane.
  *
  * Search methods: Linear, LinearBinary and Secant sample the ray wherever it goes, so
  * they follow the curved ray exactly as the straight one. ExactDDA, SafetyRadius,
@@ -35,14 +48,14 @@
  * closed mesh seen from outside are left out; on other meshes a back fragment whose ray,
  * followed back toward the viewer below the quadric, comes back out of it before depth 1
  * came in through the curved surface close by, where the front faces answer for it, and
- * is discarded (vtkReliefQuadricFrame.glsl, reliefQuadricBehindOutline). The polygons must
- * enclose the relief: where the facets sag below the true surface by a good part of
- * DepthScale, the relief's outermost points cannot be drawn.
+ * is discarded (vtkReliefQuadricFrame.glsl, reliefQuadricBehindOutline).
  */
 #ifndef vtkOpenGLQuadricReliefMapper_h
 #define vtkOpenGLQuadricReliefMapper_h
 
+#include "vtkNew.h" // For vtkNew
 #include "vtkOpenGLReliefMapper.h"
+#include "vtkPolyData.h" // For vtkNew<vtkPolyData>
 #include "vtkReliefRenderingModule.h" // For export macro
 
 class vtkLocalQuadricFilter;
@@ -88,6 +101,12 @@ protected:
 
   bool UpdateReliefSurface() override;
   void MapFrameAttributes(bool relief) override;
+  /// The hull's clearance: how far below the surface the relief's top lies.
+  void SetMapperShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  /// VTK's templates, with a triangle geometry shader where VTK has none (the hull).
+  void GetShaderTemplate(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override;
   bool SupportsSearchMethod(const vtkReliefSearchMethod& method) override;
   const char* GetUnsupportedSearchReason() override;
   std::string GetFrameSource() override;
@@ -97,7 +116,13 @@ protected:
   /// unusable ones.
   bool HasUsableQuadrics(vtkPolyData* mesh);
 
+  /// Gives the framed input's own quadrics their hull's lifts where it has none.
+  bool UpdateHullLifts();
+
   vtkLocalQuadricFilter* QuadricFilter;
+  vtkNew<vtkPolyData> LiftedSurface; // the framed input with the lifts of its quadrics
+  vtkPolyData* LiftedFrom = nullptr;
+  vtkMTimeType LiftedTime = 0;
   int DistanceMode = APPROXIMATE;
   bool ComputesQuadrics = true; // the input had no usable quadrics at the last render
   vtkMTimeType WarnedQuadricsTime = 0;

@@ -388,10 +388,16 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
   // downstream; what is drawn is made once for all mappers of these heights and settings.
   this->ReliefTextureFilter->SetInputData(heights);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!this->Textures->UpdateRelief(window, heights, this->ReliefTextureFilter))
+  vtkImageData* relief = this->Textures->UpdateRelief(window, heights, this->ReliefTextureFilter);
+  if (!relief)
   {
     return false; // said why, once
   }
+  // the shallowest depth, where the relief comes closest to the surface (the range is
+  // cached with the array)
+  vtkDataArray* texels = relief->GetPointData()->GetScalars();
+  this->ReliefTopDepth =
+    texels && texels->GetNumberOfComponents() == 4 ? texels->GetRange(3)[0] : 0.0;
   if (this->Textures->GetInputNormals() != this->InputNormals)
   {
     this->InputNormals = this->Textures->GetInputNormals();

@@ -402,6 +402,7 @@ protected:
   bool WarnedMissingHeightMap = false;
   bool WarnedDepthScale = false;
   double DrawnDepthScale = 0.0; // what this render's shaders use: UsableDepthScale()
+  double ReliefTopDepth = 0.0;  // the relief texture's shallowest depth, in [0, 1]
   bool WarnedUnmatchedLighting = false;
   std::vector<const char*> MissingShaderTags; // by the shader being built
   bool WarnedMissingShaderTags = false;

@@ -70,18 +70,23 @@ def check_sweep(text, parameter):
 
 
 def check_quadric(text):
-    """The quadric study: a row per shape, number of facets (quick: one), view and frame,
-    each figure finite."""
+    """The quadric study: a row per shape, number of facets (quick: one), depth scale (two),
+    view (three, and quick one of the torus's inner side) and frame, each figure finite."""
     if "## Curved surfaces" not in text:
         fail("no quadric study in the results")
     rows = [line.split("|")[1:-1] for line in text.splitlines()
-            if line.startswith("| ") and line.count("|") == 9
-            and line.split("|")[4].strip() in QUADRIC_FRAMES]
-    if len(rows) != 3 * 3 * len(QUADRIC_FRAMES):
-        fail("the quadric study has %d rows, not 27" % len(rows))
+            if line.startswith("| ") and line.count("|") == 11
+            and line.split("|")[5].strip() in QUADRIC_FRAMES]
+    expected = (3 * 3 + 1) * 2 * len(QUADRIC_FRAMES)
+    if len(rows) != expected:
+        fail("the quadric study has %d rows, not %d" % (len(rows), expected))
     for cells in rows:
         figure(cells[1])
-        for cell in cells[4:]:
+        figure(cells[2])
+        figure(cells[5])
+        for count in cells[6].split(","):
+            figure(count)
+        for cell in cells[7:]:
             figure(cell)
 
 
@@ -110,16 +115,33 @@ def check_derivative(text):
             figure(cell.strip())
 
 
-def check_chart(path):
+def read_png(path, what):
+    """The image at path, its width and height; fails when there is none."""
     if not os.path.isfile(path):
-        fail("no chart at " + path)
+        fail("no %s at %s" % (what, path))
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
     image = reader.GetOutput()
     width, height, _ = image.GetDimensions()
+    return image, width, height
+
+
+def check_chart(path):
+    image, width, height = read_png(path, "chart")
     if (width, height) != (900, 600):
         fail("%s is %dx%d, not 900x600" % (path, width, height))
+    low, high = image.GetPointData().GetScalars().GetRange(0)
+    if low == high:
+        fail(path + " is blank")
+
+
+def check_quadric_picture(path):
+    """The quadric study's picture: four square panels across (the truth, then the
+    polygons', flat and quadric frames' coverage), five rows, not blank."""
+    image, width, height = read_png(path, "picture")
+    if width % 4 or height % 5 or width // 4 != height // 5:
+        fail("%s is %dx%d, not 4 by 5 square panels" % (path, width, height))
     low, high = image.GetPointData().GetScalars().GetRange(0)
     if low == high:
         fail(path + " is blank")
@@ -210,6 +232,7 @@ def main():
     check_derivative(text)
     for chart in CHARTS:
         check_chart(os.path.join(arguments.output, "images", chart))
+    check_quadric_picture(os.path.join(arguments.output, "images", "quadric_outlines.png"))
     check_shading(run.stdout)
     check_sharing(run.stdout)
     print("bench smoke run: results and charts well formed")

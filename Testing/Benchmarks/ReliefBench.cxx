@@ -537,8 +537,10 @@ int main(int argc, char* argv[])
     quadric.Width = 150;
     quadric.Height = 150;
     quadric.HeightMapSize = 32;
+    quadric.Facets = { 24 };
+    quadric.InnerSweep = { 80.0 };
   }
-  if (!quick)
+  else
   {
     quadric.Facets = { 24, 32, 48 };
   }

@@ -2,7 +2,8 @@
 // outlines (Oliveira and Policarpo 2005, Fig. 9 and 15), where the flat frame keeps the polygons'.
 // The baseline shows both shapes; beside it the test checks that the outline really moves (pixels
 // the flat frame covers are uncovered), that NaN quadrics draw as the flat frame does, that a
-// quadric array of the wrong size or type is recomputed with one warning, that a grid search falls
+// quadric array of the wrong size or type is recomputed with one warning, that quadrics without
+// their hull's lifts are lifted as vtkLocalQuadricFilter lifts them, that a grid search falls
 // back to LinearBinary with one warning, and that a mesh without texture coordinates gives one
 // error and draws plainly.
 #include "ReliefEventRecorder.h"
@@ -10,6 +11,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkLocalQuadricFilter.h"
 #include "vtkNew.h"
@@ -24,6 +26,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -125,6 +128,38 @@ int TestReliefQuadricSilhouette(int argc, char* argv[])
     std::cout << "NaN quadrics against the flat frame: mean difference " << difference
               << " levels\n";
     check(difference < 0.5, "NaN quadrics draw as the flat frame");
+  }
+
+  // quadrics of the mesh's own, without their hull's lifts: lifted as the filter lifts them
+  {
+    vtkNew<vtkLocalQuadricFilter> quadrics;
+    quadrics->SetInputData(sphere);
+    quadrics->Update();
+    auto withLifts = vtkSmartPointer<vtkPolyData>::New();
+    withLifts->DeepCopy(quadrics->GetOutput());
+    auto withoutLifts = vtkSmartPointer<vtkPolyData>::New();
+    withoutLifts->DeepCopy(withLifts);
+    withoutLifts->GetPointData()->RemoveArray(vtkLocalQuadricFilter::HullLiftArrayName());
+    auto unlifted = vtkSmartPointer<vtkPolyData>::New();
+    unlifted->DeepCopy(withLifts);
+    vtkDataArray* zero = unlifted->GetPointData()->GetArray(vtkLocalQuadricFilter::HullLiftArrayName());
+    zero->Fill(0.0);
+    std::vector<unsigned char> images[3];
+    vtkPolyData* meshes[3] = { withLifts, withoutLifts, unlifted };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkRenderWindow> window;
+      window->SetOffScreenRendering(1);
+      Show<vtkOpenGLQuadricReliefMapper>(window, meshes[k], 0.0, 1.0);
+      window->Render();
+      images[k] = ReliefScene::Pixels(window);
+    }
+    const double computed = MeanDifference(images[0], images[1]);
+    const double none = MeanDifference(images[0], images[2]);
+    std::cout << "lifts computed from the mesh's quadrics against the filter's: " << computed
+              << " levels; no lift: " << none << "\n";
+    check(computed < 0.01, "quadrics without lifts are lifted as the filter lifts them");
+    check(none > 10.0 * std::max(computed, 0.01), "the lifts move the hull");
   }
 
   // bad quadric arrays and grid searches: one warning each, then it draws

@@ -1,15 +1,17 @@
 // Relief under VTK's other rendering modes, each compared with a rendering that must
 // look the same: a back face against the same square reversed and seen from the front,
-// edges on against edges off, and scalars coloured through a texture against VTK's own
+// edges on against edges off (also on the quadric mapper's hull), and scalars coloured through a texture against VTK's own
 // mapper.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
+#include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -56,6 +58,22 @@ double Differing(const std::vector<unsigned char>& a, const std::vector<unsigned
     const int difference =
       std::abs(a[i] - b[i]) + std::abs(a[i + 1] - b[i + 1]) + std::abs(a[i + 2] - b[i + 2]);
     differing += difference > tolerance ? 1 : 0;
+  }
+  return static_cast<double>(differing) / (a.size() / 3);
+}
+
+// Fraction of pixels that one image covers and the other leaves to the background (the
+// renderer's 0.1 0.12 0.16).
+double CoverageDiffering(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  auto background = [](const std::vector<unsigned char>& image, size_t i) {
+    return std::abs(image[i] - 26) <= 1 && std::abs(image[i + 1] - 31) <= 1 &&
+      std::abs(image[i + 2] - 41) <= 1;
+  };
+  int differing = 0;
+  for (size_t i = 0; i + 2 < a.size(); i += 3)
+  {
+    differing += background(a, i) != background(b, i) ? 1 : 0;
   }
   return static_cast<double>(differing) / (a.size() / 3);
 }
@@ -110,6 +128,25 @@ int TestReliefRenderingModes(int, char*[])
   Check(Differing(plainEdges, shownEdges, 60) < 0.06,
     "edges on against edges off, fraction of pixels differing",
     Differing(plainEdges, shownEdges, 60));
+
+  // The quadric mapper's hull takes VTK's edges geometry shader as it takes its own, the
+  // outline included: the coarse sphere's relief and outline stay with edges on.
+  auto quadricActor = [](bool edges) {
+    vtkNew<vtkOpenGLQuadricReliefMapper> mapper;
+    mapper->SetInputData(ReliefScene::Sphere(24));
+    mapper->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
+    mapper->SetDepthScale(0.005);
+    auto actor = ReliefScene::ReliefActor(mapper, "");
+    actor->GetProperty()->SetEdgeVisibility(edges);
+    actor->GetProperty()->SetEdgeColor(1.0, 1.0, 0.0);
+    return actor;
+  };
+  // (a coarse sphere's edges tint a good part of its pixels: compare what is covered)
+  const auto sphereWithoutEdges = Render(quadricActor(false), front, false);
+  const auto sphereWithEdges = Render(quadricActor(true), front, false);
+  Check(CoverageDiffering(sphereWithoutEdges, sphereWithEdges) < 0.002,
+    "quadric relief, edges on against edges off, fraction of pixels covered by one only",
+    CoverageDiffering(sphereWithoutEdges, sphereWithEdges));
 
   // Scalars mapped through a colour texture keep their colour on relief.
   auto colored = ReliefScene::Square(1.0);

@@ -94,6 +94,70 @@ long CoverageDifference(const Capture& a, const Capture& b)
   return count;
 }
 
+Capture CoverageComparison(const Capture& method, const Capture& truth)
+{
+  RequireSameSize(method, truth);
+  Capture comparison = truth;
+  for (size_t pixel = 0; pixel < truth.EyeDepth.size(); ++pixel)
+  {
+    const bool drawn = method.Covers(pixel);
+    const bool true_ = truth.Covers(pixel);
+    const float both = drawn && true_ ? 0.45f : 0.0f;
+    comparison.Rgb[3 * pixel] = drawn && !true_ ? 1.0f : both;
+    comparison.Rgb[3 * pixel + 1] = true_ && !drawn ? 1.0f : both;
+    comparison.Rgb[3 * pixel + 2] = both;
+  }
+  return comparison;
+}
+
+bool WriteMosaic(const std::vector<std::vector<const Capture*>>& rows, const std::string& path)
+{
+  if (rows.empty() || rows[0].empty())
+  {
+    return false;
+  }
+  const Capture& first = *rows[0][0];
+  size_t columns = 0;
+  for (const auto& row : rows)
+  {
+    columns = std::max(columns, row.size());
+  }
+  OIIO::ImageBuf mosaic(OIIO::ImageSpec(first.Width * static_cast<int>(columns),
+    first.Height * static_cast<int>(rows.size()), 3, OIIO::TypeDesc::FLOAT));
+  for (size_t r = 0; r < rows.size(); ++r)
+  {
+    for (size_t c = 0; c < rows[r].size(); ++c)
+    {
+      RequireSameSize(first, *rows[r][c]);
+      // captures run bottom to top, as OpenGL reads them
+      OIIO::ImageBufAlgo::paste(mosaic, static_cast<int>(c) * first.Width,
+        static_cast<int>(r) * first.Height, 0, 0, OIIO::ImageBufAlgo::flip(Rgb(*rows[r][c])));
+    }
+  }
+  mosaic.set_write_format(OIIO::TypeDesc::UINT8);
+  return mosaic.write(path);
+}
+
+long OutlinePixels(const Capture& capture)
+{
+  long outline = 0;
+  for (int y = 0; y < capture.Height; ++y)
+  {
+    for (int x = 0; x < capture.Width; ++x)
+    {
+      auto covers = [&](int i, int j) {
+        return i >= 0 && j >= 0 && i < capture.Width && j < capture.Height &&
+          capture.Covers(static_cast<size_t>(j) * capture.Width + i);
+      };
+      outline += covers(x, y) &&
+          !(covers(x - 1, y) && covers(x + 1, y) && covers(x, y - 1) && covers(x, y + 1))
+        ? 1
+        : 0;
+    }
+  }
+  return outline;
+}
+
 double SilhouetteError(const Capture& method, const Capture& polygons, const Capture& truth)
 {
   const long methodCount = CoverageDifference(method, truth);

@@ -6,6 +6,7 @@
 #define ReliefMetrics_h
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace ReliefMetrics
@@ -22,8 +23,20 @@ struct Capture
   bool Covers(std::size_t pixel) const { return this->EyeDepth[pixel] < 1e30f; }
 };
 
+/// The coverage of `method` against `truth` as a picture: grey where both cover, red where
+/// only the method does, green where only the truth does, black where neither.
+Capture CoverageComparison(const Capture& method, const Capture& truth);
+
+/// Writes captures of one size as a grid, each row left to right, rows top to bottom, as
+/// an 8-bit image (any format OpenImageIO writes, by the extension); false when it cannot.
+bool WriteMosaic(const std::vector<std::vector<const Capture*>>& rows, const std::string& path);
+
 /// Pixels that one capture covers and the other does not.
 long CoverageDifference(const Capture& a, const Capture& b);
+
+/// The pixels a capture covers that have an uncovered pixel beside them (left, right, above
+/// or below), or lie on the border: the length of its outline in pixels.
+long OutlinePixels(const Capture& capture);
 
 /// CoverageDifference(method, truth) / CoverageDifference(polygons, truth): 1 is no
 /// better than the coarse polygons' silhouette, 0 is perfect. 0 when the polygons already

@@ -4,6 +4,7 @@
 #include "vtkLocalQuadricFilter.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -502,4 +503,88 @@ TEST(LocalQuadricFilter, OutputKeepsTheFrameAndReportsProgress)
   ASSERT_GE(events->Progress.size(), 3u);
   EXPECT_TRUE(std::is_sorted(events->Progress.begin(), events->Progress.end()));
   EXPECT_EQ(events->Progress.back(), 1.0);
+}
+
+TEST(LocalQuadricFilter, TheLiftedHullEnclosesACoarseSphere)
+{
+  // a coarse sphere's triangles sag inside it: each point lifted along its normal by its
+  // lift, every triangle of the hull lies outside the sphere (up to the normals' tilt
+  // across a triangle, 2% of the sag), and no point is lifted more than the deepest sag of
+  // its triangles, a third of the surface's rise over their longest edge
+  const double r = 0.5;
+  vtkNew<vtkLocalQuadricFilter> filter;
+  const int n = 13;
+  const int m = 7;
+  vtkPolyData* output = Fit(filter, Grid(n, m, Sphere(r, false)));
+  vtkDataArray* lifts =
+    output->GetPointData()->GetArray(vtkLocalQuadricFilter::HullLiftArrayName());
+  ASSERT_NE(lifts, nullptr);
+  ASSERT_EQ(lifts->GetNumberOfTuples(), output->GetNumberOfPoints());
+  vtkDataArray* normals = output->GetPointData()->GetNormals();
+  double deepestSag = 0.0;
+  double mostLift = 0.0;
+  auto polys = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(size, ids);
+    double lifted[3][3];
+    double flat[3] = { 0.0, 0.0, 0.0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      double point[3];
+      double normal[3];
+      output->GetPoint(ids[k], point);
+      normals->GetTuple(ids[k], normal);
+      const double length =
+        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      for (int c = 0; c < 3; ++c)
+      {
+        lifted[k][c] = point[c] + lifts->GetComponent(ids[k], 0) * normal[c] / length;
+        flat[c] += point[c] / 3.0;
+      }
+      mostLift = std::max(mostLift, lifts->GetComponent(ids[k], 0));
+    }
+    deepestSag = std::max(
+      deepestSag, r - std::sqrt(flat[0] * flat[0] + flat[1] * flat[1] + flat[2] * flat[2]));
+    // the hull's triangle, sampled: its points at least the sphere's radius from the centre
+    for (double u = 0.0; u <= 1.0; u += 0.125)
+    {
+      for (double v = 0.0; u + v <= 1.0; v += 0.125)
+      {
+        double distance = 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double x = (1.0 - u - v) * lifted[0][c] + u * lifted[1][c] + v * lifted[2][c];
+          distance += x * x;
+        }
+        ASSERT_GT(std::sqrt(distance), r - 0.02 * deepestSag - 1e-9) << u << " " << v;
+      }
+    }
+  }
+  EXPECT_GT(deepestSag, 0.005); // the test's mesh is coarse
+  EXPECT_LT(mostLift, 2.0 * deepestSag);
+}
+
+TEST(LocalQuadricFilter, CreasesAndFlatFacesAreNotLifted)
+{
+  // a cube: flat faces rise nowhere above their triangles, and its corners are creases
+  vtkNew<vtkCubeSource> cube;
+  cube->Update();
+  vtkNew<vtkLocalQuadricFilter> filter;
+  vtkPolyData* output = Fit(filter, cube->GetOutput());
+  vtkDataArray* lifts =
+    output->GetPointData()->GetArray(vtkLocalQuadricFilter::HullLiftArrayName());
+  ASSERT_NE(lifts, nullptr);
+  for (vtkIdType p = 0; p < lifts->GetNumberOfTuples(); ++p)
+  {
+    EXPECT_EQ(lifts->GetComponent(p, 0), 0.0) << p;
+  }
+  // quadrics computed elsewhere get their lifts too
+  auto lifted = vtk::TakeSmartPointer(vtkLocalQuadricFilter::NewHullLifts(output));
+  ASSERT_NE(lifted, nullptr);
+  EXPECT_EQ(lifted->GetNumberOfTuples(), output->GetNumberOfPoints());
+  vtkNew<vtkPolyData> bare;
+  EXPECT_EQ(vtkLocalQuadricFilter::NewHullLifts(bare), nullptr);
 }

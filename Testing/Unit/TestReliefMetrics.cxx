@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -138,4 +139,28 @@ TEST(ReliefMetrics, CapturesOfDifferentSizesAreRefused)
     return 1.0f;
   })),
     std::invalid_argument);
+}
+
+TEST(ReliefMetrics, TheOutlineIsTheCoveredPixelsBesideUncoveredOnes)
+{
+  // a 10x6 rectangle in the corner: its ring of 2 (10 + 6) - 4 pixels, the border included
+  EXPECT_EQ(ReliefMetrics::OutlinePixels(Rectangle(10, 6)), 28);
+  EXPECT_EQ(ReliefMetrics::OutlinePixels(Rectangle(0, 0)), 0);
+  EXPECT_EQ(ReliefMetrics::OutlinePixels(Rectangle(1, 1)), 1);
+}
+
+TEST(ReliefMetrics, TheCoverageComparisonColoursWhatEachCovers)
+{
+  const Capture comparison =
+    ReliefMetrics::CoverageComparison(Rectangle(10, 10), Rectangle(10, 12));
+  auto rgb = [&](int x, int y) {
+    const size_t pixel = 3 * (static_cast<size_t>(y) * 32 + x);
+    return std::vector<float>(comparison.Rgb.begin() + pixel, comparison.Rgb.begin() + pixel + 3);
+  };
+  EXPECT_EQ(rgb(5, 5), std::vector<float>({ 0.45f, 0.45f, 0.45f })); // both
+  EXPECT_EQ(rgb(5, 11), std::vector<float>({ 0.0f, 1.0f, 0.0f }));   // the truth only
+  EXPECT_EQ(rgb(20, 20), std::vector<float>({ 0.0f, 0.0f, 0.0f }));  // neither
+  const Capture extra = ReliefMetrics::CoverageComparison(Rectangle(10, 12), Rectangle(10, 10));
+  EXPECT_EQ(extra.Rgb[3 * (11 * 32 + 5)], 1.0f); // the method only: red
+  EXPECT_EQ(extra.Rgb[3 * (11 * 32 + 5) + 1], 0.0f);
 }

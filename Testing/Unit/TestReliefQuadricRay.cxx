@@ -39,6 +39,34 @@ double DepthBelow(vec3 view, vec2 quadric, double d)
   return (quadric.x * x * x + quadric.y * y * y - z) / DepthScale;
 }
 
+// Eq. 5-6's depth of the point `d` along the view ray from a point `height` above the
+// quadric's apex: s with P + U s on the quadric, U perpendicular to the ray in the plane
+// of the ray and the normal, found by bisection (the point below the quadric).
+double PerpendicularDepth(vec3 view, vec2 quadric, double d, double height)
+{
+  const double sine = std::sqrt(1.0 - double(view.z) * view.z);
+  const double u[3] = { -view.x * view.z / sine, -view.y * view.z / sine, sine };
+  const double p[3] = { view.x * d, view.y * d, height + view.z * d };
+  // g(s) = quadric height minus height at P + U s: positive below the quadric
+  auto below = [&](double s) {
+    const double x = p[0] + u[0] * s;
+    const double y = p[1] + u[1] * s;
+    return quadric.x * x * x + quadric.y * y * y - (p[2] + u[2] * s);
+  };
+  double low = 0.0;
+  double high = 1.0;
+  while (below(high) > 0.0)
+  {
+    high *= 2.0;
+  }
+  for (int k = 0; k < 80; ++k)
+  {
+    const double middle = 0.5 * (low + high);
+    (below(middle) > 0.0 ? low : high) = middle;
+  }
+  return low / DepthScale;
+}
+
 struct CurvedRay
 {
   ReliefRay Ray;
@@ -239,7 +267,7 @@ TEST_F(ReliefQuadricRay, TheExactDistanceIsMeasuredPerpendicularToTheRay)
       const float range = reliefQuadricRange(terms);
       const ReliefRay ray = reliefQuadricExact(
         reliefQuadricViewRay(vec2(0.3f, 0.6f), view, Scale, terms, range), view, quadric,
-        DepthScale, range);
+        DepthScale, 0.0f, range);
       const double sine = std::sqrt(1.0 - double(view.z) * view.z);
       for (float t : { 0.1f, 0.4f, 0.8f })
       {
@@ -248,30 +276,11 @@ TEST_F(ReliefQuadricRay, TheExactDistanceIsMeasuredPerpendicularToTheRay)
         double expected = vertical;
         if (convex && sine > 1e-4)
         {
-          const double u[3] = { -view.x * view.z / sine, -view.y * view.z / sine, sine };
-          const double p[3] = { view.x * d, view.y * d, view.z * d };
-          // g(s) = quadric height minus height at P + U s: positive below the quadric
-          auto below = [&](double s) {
-            const double x = p[0] + u[0] * s;
-            const double y = p[1] + u[1] * s;
-            return quadric.x * x * x + quadric.y * y * y - (p[2] + u[2] * s);
-          };
-          double low = 0.0;
-          double high = 1.0;
-          while (below(high) > 0.0)
-          {
-            high *= 2.0;
-          }
-          for (int k = 0; k < 80; ++k)
-          {
-            const double middle = 0.5 * (low + high);
-            (below(middle) > 0.0 ? low : high) = middle;
-          }
-          expected = (vertical > 0.0 ? low : -low) / DepthScale;
           if (vertical <= 0.0)
           {
             continue; // above the quadric: the ray is outside, nothing to measure
           }
+          expected = PerpendicularDepth(view, quadric, d, 0.0);
         }
         EXPECT_NEAR(reliefRayAt(ray, t).z, expected, 1e-3 * std::max(1.0, std::abs(expected)))
           << "a " << quadric.x << ", b " << quadric.y << ", tilt " << tilt << ", t " << t;
@@ -322,10 +331,11 @@ TEST_F(ReliefQuadricRay, TheFrameMeasuresEachModesDistance)
       const auto exactFragment = FragmentSeenAlong<exact::ReliefFragment>(view);
       const approximate::ReliefRay ray = approximate::reliefFrameViewRay(
         approximate::reliefQuadricFrame(
-          AxisBasis<approximate::ReliefTangentBasis>(), quadric, fragment),
+          AxisBasis<approximate::ReliefTangentBasis>(), quadric, 0.0f, fragment),
         fragment);
       const exact::ReliefRay exactRay = exact::reliefFrameViewRay(
-        exact::reliefQuadricFrame(AxisBasis<exact::ReliefTangentBasis>(), quadric, exactFragment),
+        exact::reliefQuadricFrame(
+          AxisBasis<exact::ReliefTangentBasis>(), quadric, 0.0f, exactFragment),
         exactFragment);
       const CurvedRay reference = MakeRay(view, quadric);
       for (float t : { 0.2f, 0.5f, 0.9f })
@@ -347,4 +357,78 @@ TEST_F(ReliefQuadricRay, TheFrameMeasuresEachModesDistance)
     }
   }
   EXPECT_EQ(differing, 6); // every convex case: 2 tilts, 3 points
+}
+
+TEST_F(ReliefQuadricRay, AHullPointStartsItsRayWhereTheRayMeetsTheQuadric)
+{
+  // The quadric mapper's hull lies off the surface: a fragment `height` above the quadric
+  // (below it, negative) starts its view ray where the ray first meets the quadric, and a
+  // ray that passes above a dome meets nothing and is hidden. Both distance modes.
+  namespace approximate = ReliefCpuMirror::Quadric;
+  namespace exact = ReliefCpuMirror::QuadricExact;
+  const vec2 quadrics[] = { { -1.0f, -1.0f }, { 0.5f, 0.3f }, { 0.6f, -0.4f }, { 0.0f, 0.0f } };
+  int misses = 0;
+  int meetings = 0;
+  for (vec2 quadric : quadrics)
+  {
+    const bool dome = quadric.x < 0.0f && quadric.y < 0.0f;
+    for (float tilt : { 0.3f, 1.0f, 1.45f })
+    {
+      for (float height : { 0.004f, -0.003f })
+      {
+        const vec3 view = View(tilt, 0.4f);
+        const auto fragment = FragmentSeenAlong<approximate::ReliefFragment>(view);
+        const auto frame = approximate::reliefQuadricFrame(
+          AxisBasis<approximate::ReliefTangentBasis>(), quadric, height, fragment);
+        // the ray's depth below the quadric, from the fragment, in depth units
+        auto depthAt = [&](double d) { return DepthBelow(view, quadric, d) - height / DepthScale; };
+        if (!frame.meets)
+        {
+          ++misses;
+          EXPECT_TRUE(dome && height > 0.0f) << "only a ray above a dome misses it";
+          for (double d = 0.0; d < 4.0; d += 0.001)
+          {
+            ASSERT_LT(depthAt(d), 0.0) << "the ray passes above the quadric";
+          }
+          EXPECT_TRUE(approximate::reliefFrameHides(frame, fragment));
+          EXPECT_TRUE(
+            approximate::reliefQuadricLeaves(approximate::reliefFrameViewRay(frame, fragment)));
+          continue;
+        }
+        ++meetings;
+        EXPECT_FALSE(approximate::reliefFrameHides(frame, fragment));
+        EXPECT_NEAR(depthAt(frame.entry), 0.0, 1e-4) << "the entry lies on the quadric";
+        EXPECT_EQ(frame.entry > 0.0f, height > 0.0f);
+        for (double d = 0.0; std::abs(d) < std::abs(frame.entry) * 0.999;
+             d += frame.entry * 0.01)
+        {
+          EXPECT_EQ(depthAt(d) < 0.0, height > 0.0f) << "no nearer meeting";
+        }
+        const approximate::ReliefRay ray = approximate::reliefFrameViewRay(frame, fragment);
+        const auto exactFragment = FragmentSeenAlong<exact::ReliefFragment>(view);
+        const auto exactFrame = exact::reliefQuadricFrame(
+          AxisBasis<exact::ReliefTangentBasis>(), quadric, height, exactFragment);
+        const exact::ReliefRay exactRay = exact::reliefFrameViewRay(exactFrame, exactFragment);
+        for (float t : { 0.0f, 0.3f, 0.9f })
+        {
+          const double d = frame.entry + double(t) * frame.range;
+          const vec3 point = approximate::reliefRayAt(ray, t);
+          EXPECT_NEAR(point.z, depthAt(d), 1e-3 * std::max(1.0, std::abs(depthAt(d))));
+          EXPECT_NEAR(point.x, 0.3 + view.x * d / Scale.x, 1e-5);
+          EXPECT_NEAR(point.y, 0.6 + view.y * d / Scale.y, 1e-5);
+          approximate::ReliefHit hit{};
+          hit.t = t;
+          EXPECT_NEAR(approximate::reliefFrameHitDistance(frame, fragment, ray, hit), d, 1e-6);
+          if (dome && depthAt(d) > 1e-3)
+          {
+            EXPECT_NEAR(exact::reliefRayAt(exactRay, t).z,
+              PerpendicularDepth(view, quadric, d, height), 1e-3)
+              << "tilt " << tilt << ", height " << height << ", t " << t;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(misses, 0);
+  EXPECT_GT(meetings, 10);
 }

@@ -133,9 +133,10 @@ vec2 reliefGridAt(ReliefGridRay grid, float t)
 //     of the reference surface that far along the view ray (zero for flat frames)
 // and, for the other stages, reliefFrameVertex() (vertex shader, after the position and
 // texture coordinates are written) and the macro reliefFrameGeometry(vertex) (geometry
-// shader, VTK's edges and wide lines: its unsized input arrays take loop indices only). The mapper
-// defines RELIEF_VERTEX_STAGE, RELIEF_GEOMETRY_STAGE or RELIEF_FRAGMENT_STAGE before a frame's
-// file; the CPU mirror defines none and compiles what holds no varyings.
+// shader, VTK's edges or the quadric mapper's vtkReliefTriangleGS.glsl: its unsized input
+// arrays take loop indices only). The mapper defines RELIEF_VERTEX_STAGE,
+// RELIEF_GEOMETRY_STAGE or RELIEF_FRAGMENT_STAGE before a frame's file; the CPU mirror
+// defines none and compiles what holds no varyings.
 
 // What every frame knows of its fragment: the rasteriser's and the mapper's part.
 struct ReliefFragment

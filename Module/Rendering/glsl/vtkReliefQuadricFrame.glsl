@@ -7,12 +7,15 @@
 // tangent frame (x along the tangent, y along the bitangent, z along the normal, world
 // units; vtkLocalQuadricFilter's convention: a sphere seen from outside has a, b < 0).
 // The view ray is straight, P = V t with V the unit view direction in that frame
-// (V.z < 0 going in) and t the distance travelled. Its depth below the quadric,
-// measured along z (Eq. 7, the approximate distance), in relief depth units (1 =
-// DepthScale), is D(t) = A t^2 + B t with A = (a V.x^2 + b V.y^2) / DepthScale and
-// B = -V.z / DepthScale: quadratic in t, which a ReliefRay's bend carries, so every
-// search that samples the ray (Linear, LinearBinary, Secant) follows it unchanged. Its
-// texture coordinates move by (V.x / s_x, V.y / s_y) per unit t (Eq. 9).
+// (V.z < 0 going in) and t the distance travelled from the fragment. The fragment lies on
+// the mapper's hull, `height` above the quadric (below it where the polygons sag inside
+// the surface and the hull is not lifted there); the ray starts where it meets the
+// quadric (reliefQuadricEntry). Its depth below the quadric, measured along z (Eq. 7, the
+// approximate distance), in relief depth units (1 = DepthScale), is D(t) = A t^2 + B t -
+// height / DepthScale with A = (a V.x^2 + b V.y^2) / DepthScale and B = -V.z / DepthScale:
+// quadratic in t, which a ReliefRay's bend carries, so every search that samples the ray
+// (Linear, LinearBinary, Secant) follows it unchanged. Its texture coordinates move by
+// (V.x / s_x, V.y / s_y) per unit t (Eq. 9).
 //
 // The exact distance (Eq. 5-6, compiled with RELIEF_EXACT_DISTANCE) measures from P
 // along U, the unit vector perpendicular to V in the plane of V and the normal, to the
@@ -34,21 +37,69 @@ vec2 reliefQuadricVertex(vec2 quadricMC, vec2 stretch)
 }
 
 #if defined(RELIEF_VERTEX_STAGE)
-in vec2 reliefQuadricMC; // (a, b) of vtkLocalQuadricFilter, model units
+in vec2 reliefQuadricMC;   // (a, b) of vtkLocalQuadricFilter, model units
+in float reliefHullLiftMC; // and its lift: how far the surface rises above the polygons
+uniform float reliefHullClearance; // how far below the surface the relief's top lies
+uniform mat4 reliefVCDCMatrix;
 out vec2 reliefQuadricVSOutput;
+out vec3 reliefHullOffsetVSOutput; // the hull's offset from the point, view space
 
+// The hull: each point lifted along its model normal (the offset carried to view space as
+// a direction: an actor's scale stretches it as it stretches the mesh) as far as the relief
+// may rise above the polygons, the surface's rise less the relief's clearance below the
+// surface. No further: a ray that starts higher runs further before it meets its quadric,
+// and at grazing angles the quadric's error grows with that run.
 void reliefFrameVertex()
 {
   ReliefTangentVertex basis = reliefTangentBasisVertex();
   reliefQuadricVSOutput = reliefQuadricVertex(reliefQuadricMC, basis.stretch);
+  bool finite = !isnan(reliefHullLiftMC) && !isinf(reliefHullLiftMC);
+  vec3 along = reliefDirectionMatrix * normalize(reliefNormalMC);
+  float stretch = length(along);
+  float lift = finite ? max(reliefHullLiftMC * stretch - reliefHullClearance, 0.0) : 0.0;
+  vec3 offset = stretch > 0.0 ? along * (lift / stretch) : vec3(0.0);
+  reliefHullOffsetVSOutput = offset;
+  reliefPositionVSOutput += offset;
+  gl_Position += reliefVCDCMatrix * vec4(offset, 0.0);
 }
 #elif defined(RELIEF_GEOMETRY_STAGE)
 in vec2 reliefQuadricVSOutput[];
+in vec3 reliefHullOffsetVSOutput[];
 out vec2 reliefQuadricGSOutput;
+out vec3 reliefHullOffsetGSOutput;
+out vec3 reliefBarycentricGSOutput;
+flat out vec3 reliefEdgeRisesGSOutput;
 
+// How far a corner's quadric rises along its normal over the step `edge` in its tangent
+// plane, a x^2 + b y^2 (vtkLocalQuadricFilter computes the same for the lift).
+float reliefQuadricRise(vec3 normal, vec3 tangent, vec2 quadric, vec3 edge)
+{
+  vec3 n = normalize(normal);
+  vec3 t = normalize(tangent - n * dot(n, tangent));
+  float x = dot(edge, t);
+  float y = dot(edge, cross(n, t));
+  return quadric.x * x * x + quadric.y * y * y;
+}
+
+// The surface's height over the chord from corner i to corner j is -s (1 - s) times the
+// mean of both corners' rises along it; w = minus that mean. Constant indices only: an
+// unsized input array takes no function argument as index.
+#define reliefHullCorner(i) (reliefPositionVSOutput[i] - reliefHullOffsetVSOutput[i])
+#define reliefHullEdgeRise(i, j) \
+  (-0.5 * (reliefQuadricRise(reliefNormalVSOutput[i], reliefTangentVSOutput[i], \
+             reliefQuadricVSOutput[i], reliefHullCorner(j) - reliefHullCorner(i)) + \
+            reliefQuadricRise(reliefNormalVSOutput[j], reliefTangentVSOutput[j], \
+              reliefQuadricVSOutput[j], reliefHullCorner(i) - reliefHullCorner(j))))
+
+// Each corner its barycentric axis, the triangle its three edges' w (the edge opposite
+// corner 0 first): the fragment's quadric surface stands sum l_i l_j w_ij over its polygon.
 #define reliefFrameGeometry(vertex) \
   reliefTangentBasisGeometry(vertex); \
-  reliefQuadricGSOutput = reliefQuadricVSOutput[vertex]
+  reliefQuadricGSOutput = reliefQuadricVSOutput[vertex]; \
+  reliefHullOffsetGSOutput = reliefHullOffsetVSOutput[vertex]; \
+  reliefBarycentricGSOutput = vec3(equal(ivec3(vertex), ivec3(0, 1, 2))); \
+  reliefEdgeRisesGSOutput = \
+    vec3(reliefHullEdgeRise(1, 2), reliefHullEdgeRise(2, 0), reliefHullEdgeRise(0, 1))
 #else
 
 // The quadric's depth terms (A, B) of the view direction `view` in the tangent frame;
@@ -90,12 +141,13 @@ ReliefRay reliefQuadricViewRay(vec2 entryUV, vec3 view, vec2 scale, vec2 terms, 
 }
 
 // Adds the exact distance's terms to a view ray of reliefQuadricViewRay() (same view,
-// quadric, DepthScale and range). With Q = a P.x^2 + b P.y^2 - P.z = DepthScale D (the
-// vertical depth D in depth units), A = a U.x^2 + b U.y^2 and B = 2 (a P.x U.x +
-// b P.y U.y) - U.z, Eq. 6's root is s = 2 Q / (-B + sqrt(B^2 - 4 A Q)), written so that
-// it holds as A goes to 0; B is linear in the ray parameter.
+// quadric, DepthScale and range) that starts `entry` along the view direction from the
+// fragment, above the quadric's apex (P.x, P.y = V.x, V.y (entry + t range)). With Q =
+// a P.x^2 + b P.y^2 - P.z = DepthScale D (the vertical depth D in depth units), A =
+// a U.x^2 + b U.y^2 and B = 2 (a P.x U.x + b P.y U.y) - U.z, Eq. 6's root is s = 2 Q /
+// (-B + sqrt(B^2 - 4 A Q)), written so that it holds as A goes to 0; B is linear in t.
 ReliefRay reliefQuadricExact(ReliefRay ray, vec3 view, vec2 quadric, float depthScale,
-  float range)
+  float entry, float range)
 {
   float sine = sqrt(max(1.0f - view.z * view.z, 0.0f));
   ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
@@ -105,8 +157,8 @@ ReliefRay reliefQuadricExact(ReliefRay ray, vec3 view, vec2 quadric, float depth
   {
     vec3 u = vec3(-view.x * view.z / sine, -view.y * view.z / sine, sine);
     float a = quadric.x * u.x * u.x + quadric.y * u.y * u.y;
-    float b = 2.0f * range * (quadric.x * view.x * u.x + quadric.y * view.y * u.y);
-    ray.exact = vec4(b, -u.z, 4.0f * a * depthScale, 1.0f);
+    float along = 2.0f * (quadric.x * view.x * u.x + quadric.y * view.y * u.y);
+    ray.exact = vec4(along * range, along * entry - u.z, 4.0f * a * depthScale, 1.0f);
   }
   return ray;
 }
@@ -150,6 +202,23 @@ bool reliefQuadricLeaves(ReliefRay ray)
   return reliefRayAt(ray, 1.0f).z < 0.5f;
 }
 
+// Where the view ray from a point `height` above the quadric (depth units, negative
+// below it) first meets it: A t^2 + B t = height, its root 2 height / (B + sqrt(B^2 +
+// 4 A height)) written so that it holds as A goes to 0. x: that distance; y, z: the
+// depth terms from there on, (A, B + 2 A t) = (A, sqrt(B^2 + 4 A height)); w: 0 where
+// the ray passes above a quadric that bends away, meeting nothing (below a bowl that
+// it never leaves, it starts where it is).
+vec4 reliefQuadricEntry(vec2 terms, float height)
+{
+  float discriminant = terms.y * terms.y + 4.0f * terms.x * height;
+  if (discriminant < 0.0f)
+  {
+    return vec4(0.0f, terms.x, terms.y, height > 0.0f ? 0.0f : 1.0f);
+  }
+  float root = sqrt(discriminant);
+  return vec4(2.0f * height / (terms.y + root), terms.x, max(root, 1e-12f), 1.0f);
+}
+
 struct ReliefFrame
 {
   vec3 axisU;
@@ -162,9 +231,17 @@ struct ReliefFrame
   vec2 quadric;   // (a, b) as the side seen bends: turned for a back face
   vec2 outward;   // (a, b) as the front side bends, for the back-face test
   vec3 view;      // the unit view direction in the frame (x, y, z: tangent, bitangent, normal)
+  float height;   // the fragment's point above the quadric of the side seen, world units
+  bool meets;     // the view ray meets the quadric
+  float entry;    // the distance along it to where it does (world units, < 0 behind)
+  vec2 terms;     // the depth terms from there on
+  float range;    // and the distance searched from there (reliefQuadricRange)
 };
 
-ReliefFrame reliefQuadricFrame(ReliefTangentBasis basis, vec2 quadric, ReliefFragment fragment)
+// The frame at a fragment whose point lies `height` above the quadric surface along the
+// normal, as the front side sees it (the hull's: vtkOpenGLQuadricReliefMapper).
+ReliefFrame reliefQuadricFrame(
+  ReliefTangentBasis basis, vec2 quadric, float height, ReliefFragment fragment)
 {
   ReliefFrame frame;
   frame.axisU = basis.tangent / basis.textureScale.x;
@@ -178,28 +255,49 @@ ReliefFrame reliefQuadricFrame(ReliefTangentBasis basis, vec2 quadric, ReliefFra
   frame.quadric = fragment.frontFacing ? quadric : -quadric;
   frame.view = vec3(dot(fragment.viewVC, basis.tangent), dot(fragment.viewVC, basis.bitangent),
     dot(fragment.viewVC, basis.normal));
+  frame.height = fragment.frontFacing ? height : -height;
+  vec4 entry = reliefQuadricEntry(
+    reliefQuadricDepthTerms(frame.view, frame.quadric, fragment.depthScale),
+    frame.height / fragment.depthScale);
+  frame.meets = entry.w > 0.5f;
+  frame.entry = entry.x;
+  frame.terms = vec2(entry.y, entry.z);
+  frame.range = reliefQuadricRange(frame.terms);
   return frame;
 }
 
-// A back face draws relief only where the ray reaches it from inside the shape.
+// A front fragment whose ray passes above the quadric lies outside the outline; a back
+// face draws relief only where the ray reaches it from inside the shape.
 bool reliefFrameHides(ReliefFrame frame, ReliefFragment fragment)
 {
-  return !fragment.frontFacing && !fragment.twoSided &&
-    reliefQuadricBehindOutline(
-      reliefQuadricDepthTerms(frame.view, frame.outward, fragment.depthScale),
-      fragment.eyeDistance);
+  if (fragment.frontFacing || fragment.twoSided)
+  {
+    return !frame.meets;
+  }
+  return reliefQuadricBehindOutline(
+    reliefQuadricDepthTerms(frame.view, frame.outward, fragment.depthScale),
+    fragment.eyeDistance);
 }
 
-// The straight view ray below the quadric, over the range that is searched.
+// The straight view ray below the quadric, from where it meets it over the range that is
+// searched; one that meets nothing rises from the fragment's point (it leaves at once).
 ReliefRay reliefFrameViewRay(ReliefFrame frame, ReliefFragment fragment)
 {
-  vec2 terms = reliefQuadricDepthTerms(frame.view, frame.quadric, fragment.depthScale);
-  float range = reliefQuadricRange(terms);
+  vec2 entryUV = fragment.tcoord +
+    frame.entry * vec2(frame.view.x / frame.textureScale.x, frame.view.y / frame.textureScale.y);
   ReliefRay ray =
-    reliefQuadricViewRay(fragment.tcoord, frame.view, frame.textureScale, terms, range);
+    reliefQuadricViewRay(entryUV, frame.view, frame.textureScale, frame.terms, frame.range);
 #ifdef RELIEF_EXACT_DISTANCE
-  ray = reliefQuadricExact(ray, frame.view, frame.quadric, fragment.depthScale, range);
+  ray = reliefQuadricExact(
+    ray, frame.view, frame.quadric, fragment.depthScale, frame.entry, frame.range);
 #endif
+  if (!frame.meets)
+  {
+    ray.origin = vec3(fragment.tcoord.x, fragment.tcoord.y, 0.0f);
+    ray.direction = vec3(0.0f, 0.0f, -1.0f);
+    ray.bend = 0.0f;
+    ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  }
   return ray;
 }
 
@@ -211,8 +309,7 @@ bool reliefFrameRayLeft(ReliefFrame frame, ReliefRay ray, ReliefHit hit)
 float reliefFrameHitDistance(ReliefFrame frame, ReliefFragment fragment, ReliefRay ray,
   ReliefHit hit)
 {
-  return hit.t *
-    reliefQuadricRange(reliefQuadricDepthTerms(frame.view, frame.quadric, fragment.depthScale));
+  return frame.entry + hit.t * frame.range;
 }
 
 // The quadric's slope at the point `distance` along the view ray, in view space.
@@ -225,10 +322,25 @@ vec3 reliefFrameSurfaceSlope(ReliefFrame frame, ReliefFragment fragment, float d
 
 #if defined(RELIEF_FRAGMENT_STAGE)
 in vec2 reliefQuadricVSOutput;
+in vec3 reliefHullOffsetVSOutput;
+in vec3 reliefBarycentricVSOutput;
+flat in vec3 reliefEdgeRisesVSOutput;
+
+// The fragment's height above the quadric surface along the front side's unit normal:
+// the hull's lift there less the surface's rise over the polygon, sum l_i l_j w_ij.
+float reliefHullHeight(vec3 frontNormal)
+{
+  vec3 l = reliefBarycentricVSOutput;
+  return dot(reliefHullOffsetVSOutput, frontNormal) -
+    dot(l.yzx * l.zxy, reliefEdgeRisesVSOutput);
+}
 
 ReliefFrame reliefFrameOf(ReliefFragment fragment)
 {
-  return reliefQuadricFrame(reliefTangentBasisOf(fragment), reliefQuadricVSOutput, fragment);
+  ReliefTangentBasis basis = reliefTangentBasisOf(fragment);
+  vec3 frontNormal = fragment.frontFacing ? basis.normal : -basis.normal;
+  return reliefQuadricFrame(
+    basis, reliefQuadricVSOutput, reliefHullHeight(frontNormal), fragment);
 }
 #endif
 #endif
