@@ -382,15 +382,20 @@ vtkFloatArray* vtkLocalQuadricFilter::NewHullLifts(vtkPolyData* framed)
 {
   vtkPointData* pointData = framed ? framed->GetPointData() : nullptr;
   vtkDataArray* quadrics = pointData ? pointData->GetArray(QuadricArrayName()) : nullptr;
-  if (!quadrics || quadrics->GetNumberOfComponents() != 2 || !pointData->GetNormals() ||
-    !pointData->GetTangents())
+  const vtkIdType count = framed ? framed->GetNumberOfPoints() : 0;
+  auto holds = [count](vtkDataArray* array, int components) {
+    return array && array->GetNumberOfComponents() == components &&
+      array->GetNumberOfTuples() == count;
+  };
+  if (!holds(quadrics, 2) || !holds(pointData->GetNormals(), 3) ||
+    !holds(pointData->GetTangents(), 3) || !framed->GetPolys())
   {
     return nullptr;
   }
   const std::vector<float> lift = HullLifts(framed, quadrics);
   vtkFloatArray* lifts = vtkFloatArray::New();
   lifts->SetName(HullLiftArrayName());
-  lifts->SetNumberOfTuples(framed->GetNumberOfPoints());
+  lifts->SetNumberOfTuples(count);
   std::copy(lift.begin(), lift.end(), lifts->GetPointer(0));
   return lifts;
 }

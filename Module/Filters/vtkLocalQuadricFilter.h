@@ -81,9 +81,9 @@ public:
   ///@}
 
   /**
-   * The hull's lifts (HullLiftArrayName()) of a mesh that carries quadrics
-   * (QuadricArrayName()), point normals and tangents, as this filter's output does; null
-   * when it lacks one of them. For quadrics computed otherwise.
+   * The hull's lifts (HullLiftArrayName()) of a triangle mesh that carries quadrics
+   * (QuadricArrayName()), point normals and tangents, one tuple a point, as this filter's
+   * output does; null when it lacks one of them. For quadrics computed otherwise.
    */
   VTK_NEWINSTANCE static vtkFloatArray* NewHullLifts(vtkPolyData* framed);
 

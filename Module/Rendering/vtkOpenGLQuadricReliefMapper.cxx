@@ -53,8 +53,13 @@ vtkLocalQuadricFilter* vtkOpenGLQuadricReliefMapper::GetLocalQuadricFilter()
 
 vtkPolyData* vtkOpenGLQuadricReliefMapper::GetReliefSurface()
 {
-  return this->ComputesQuadrics ? this->QuadricFilter->GetOutput()
-                                : this->Superclass::GetReliefSurface();
+  if (this->ComputesQuadrics)
+  {
+    return this->QuadricFilter->GetOutput();
+  }
+  // quadrics of the user's own: with the lifts computed for them, when they had none
+  vtkPolyData* framed = this->Superclass::GetReliefSurface();
+  return framed && framed == this->LiftedFrom ? this->LiftedSurface.GetPointer() : framed;
 }
 
 bool vtkOpenGLQuadricReliefMapper::HasUsableQuadrics(vtkPolyData* mesh)
@@ -108,6 +113,8 @@ bool vtkOpenGLQuadricReliefMapper::UpdateHullLifts()
         framed->GetPointData()->GetAbstractArray(vtkLocalQuadricFilter::HullLiftArrayName()),
         framed))
   {
+    this->LiftedFrom = nullptr;
+    this->LiftedSurface->Initialize();
     return true;
   }
   // quadrics of the user's own, without their lifts: lift the hull off them

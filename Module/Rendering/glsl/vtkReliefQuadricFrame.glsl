@@ -37,7 +37,7 @@ vec2 reliefQuadricVertex(vec2 quadricMC, vec2 stretch)
 }
 
 #if defined(RELIEF_VERTEX_STAGE)
-in vec2 reliefQuadricMC;   // (a, b) of vtkLocalQuadricFilter, model units
+in vec2 reliefQuadricMC;  // (a, b) of vtkLocalQuadricFilter, model units
 in float reliefHullLiftMC; // and its lift: how far the surface rises above the polygons
 uniform float reliefHullClearance; // how far below the surface the relief's top lies
 uniform mat4 reliefVCDCMatrix;
@@ -206,8 +206,8 @@ bool reliefQuadricLeaves(ReliefRay ray)
 // below it) first meets it: A t^2 + B t = height, its root 2 height / (B + sqrt(B^2 +
 // 4 A height)) written so that it holds as A goes to 0. x: that distance; y, z: the
 // depth terms from there on, (A, B + 2 A t) = (A, sqrt(B^2 + 4 A height)); w: 0 where
-// the ray passes above a quadric that bends away, meeting nothing (below a bowl that
-// it never leaves, it starts where it is).
+// the ray passes above a quadric that bends away, meeting nothing (below a bowl whose
+// surface it never crosses, it starts where it is, -height deep: reliefFrameViewRay).
 vec4 reliefQuadricEntry(vec2 terms, float height)
 {
   float discriminant = terms.y * terms.y + 4.0f * terms.x * height;
@@ -235,6 +235,7 @@ struct ReliefFrame
   bool meets;     // the view ray meets the quadric
   float entry;    // the distance along it to where it does (world units, < 0 behind)
   vec2 terms;     // the depth terms from there on
+  float depth;    // the ray's depth there: 0 on the quadric, -height below a bowl it never crosses
   float range;    // and the distance searched from there (reliefQuadricRange)
 };
 
@@ -261,6 +262,7 @@ ReliefFrame reliefQuadricFrame(
     frame.height / fragment.depthScale);
   frame.meets = entry.w > 0.5f;
   frame.entry = entry.x;
+  frame.depth = frame.height < 0.0f && entry.x == 0.0f ? -frame.height / fragment.depthScale : 0.0f;
   frame.terms = vec2(entry.y, entry.z);
   frame.range = reliefQuadricRange(frame.terms);
   return frame;
@@ -287,6 +289,7 @@ ReliefRay reliefFrameViewRay(ReliefFrame frame, ReliefFragment fragment)
     frame.entry * vec2(frame.view.x / frame.textureScale.x, frame.view.y / frame.textureScale.y);
   ReliefRay ray =
     reliefQuadricViewRay(entryUV, frame.view, frame.textureScale, frame.terms, frame.range);
+  ray.origin.z = frame.depth;
 #ifdef RELIEF_EXACT_DISTANCE
   ray = reliefQuadricExact(
     ray, frame.view, frame.quadric, fragment.depthScale, frame.entry, frame.range);
