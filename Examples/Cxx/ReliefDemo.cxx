@@ -116,10 +116,10 @@ int main(int argc, char* argv[])
       [](vtkRenderWindow* w) { ReliefScene::ShowInterpenetration(w, 800, 400); } },
     { "search_methods",
       "thin features: Linear, LinearBinary, Secant, ExactDDA, SafetyRadius, ConeStep, "
-      "MaximumMipmap at 45 (top) and 80 degrees",
-      [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1400, 400); } },
+      "MaximumMipmap, Automatic at 45 (top) and 80 degrees",
+      [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1600, 400); } },
     { "sample_count",
-      "height samples per pixel, LinearBinary 10+5, the view ray's search (blue 0, red 20)",
+      "height samples per pixel, Automatic (the default), the view ray's search (blue 0, red 20)",
       [](vtkRenderWindow* w) {
         auto mapper = ReliefScene::ShowBricks(w, 640, 480, 45.0);
         mapper->SetDisplayModeToSampleCount();

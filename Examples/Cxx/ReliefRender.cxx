@@ -57,7 +57,8 @@ struct Options
   double Tiles[2] = { 1.0, 1.0 }; // along u and v
   std::string TextureMap; // empty: keep the mesh's own texture coordinates
   bool DepthConvention = false;
-  int SearchMethod = vtkOpenGLReliefMapper::LINEAR_BINARY;
+  int SearchMethod = vtkOpenGLReliefMapper::AUTOMATIC;
+  double ScreenTolerance = 0.5;
   int LinearSteps = 10;
   int BinarySteps = 5;
   double SafetyTolerance = 0.0;
@@ -100,9 +101,11 @@ void PrintUsage(std::ostream& os)
         "                       generate texture coordinates for a mesh that has none\n"
         "                       (default: use the mesh's own)\n"
         "  --depth-convention   read the height map as white = deep\n"
-        "  --search linear|linear-binary|secant|exact-dda|safety-radius|cone-step|\n"
-        "           maximum-mipmap\n"
-        "                       ray search method (default: linear-binary)\n"
+        "  --search automatic|linear|linear-binary|secant|exact-dda|safety-radius|\n"
+        "           cone-step|maximum-mipmap\n"
+        "                       ray search method (default: automatic)\n"
+        "  --screen-tolerance P pixels the automatic search may leave out, 0 to 100\n"
+        "                       (default: 0.5; 0: exact everywhere)\n"
         "  --linear-steps N     linear search steps, 1 to 512 (default: "
      << defaults.LinearSteps
      << ")\n"
@@ -220,6 +223,11 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
       [&options](const std::string& value) {
         options.SearchMethod = ReliefScene::SearchMethodNamed(value);
         return options.SearchMethod >= 0;
+      } },
+    { "--screen-tolerance",
+      [&options](const std::string& value) {
+        return ParseNumber(value, options.ScreenTolerance) && options.ScreenTolerance >= 0.0 &&
+          options.ScreenTolerance <= 100.0;
       } },
     { "--linear-steps", integerIn(options.LinearSteps, 1, 512) },
     { "--binary-steps", integerIn(options.BinarySteps, 0, 32) },
@@ -544,6 +552,7 @@ int main(int argc, char* argv[])
     mapper->GetReliefTextureFilter()->SetInputConventionToDepth();
   }
   mapper->SetSearchMethod(options.SearchMethod);
+  mapper->SetScreenTolerance(options.ScreenTolerance);
   mapper->SetLinearSteps(options.LinearSteps);
   mapper->SetBinarySteps(options.BinarySteps);
   mapper->SetSafetyRadiusTolerance(options.SafetyTolerance);

@@ -167,9 +167,9 @@ void vtkOpenGLQuadricReliefMapper::GetShaderTemplate(
   }
 }
 
-bool vtkOpenGLQuadricReliefMapper::SupportsSearchMethod(const vtkReliefSearchMethod& method)
+const vtkReliefSearchMethod* vtkOpenGLQuadricReliefMapper::DescribeSearch(int method)
 {
-  return method.FollowsCurvedRays;
+  return vtkReliefSearchMethod::GetForCurvedRays(method);
 }
 
 const char* vtkOpenGLQuadricReliefMapper::GetUnsupportedSearchReason()

@@ -33,10 +33,12 @@
  * NaN coefficients are taken as a plane.
  *
  * Search methods: Linear, LinearBinary and Secant sample the ray wherever it goes, so
- * they follow the curved ray exactly as the straight one. ExactDDA, SafetyRadius,
- * ConeStep and MaximumMipmap walk cells, radii, cones or pyramid nodes along a
- * straight line in texture space, assuming depth linear along it; below a quadric it
- * is not, so they are not offered: they fall back to LinearBinary with one warning.
+ * they follow the curved ray exactly as the straight one; so does Automatic, the
+ * default, with steps of half a texel or of its screen tolerance (no cone map).
+ * ExactDDA, SafetyRadius, ConeStep and MaximumMipmap walk cells, radii, cones or pyramid
+ * nodes along a straight line in texture space, assuming depth linear along it; below a
+ * quadric it is not, so they are not offered: they fall back to LinearBinary with one
+ * warning.
  * Self-shadowing follows the light from the hit in the tangent plane of the fragment
  * (flat), an approximation on curved surfaces. Shadows with other actors come through
  * VTK's shadow-map passes (vtkShadowMapBakerPass, vtkShadowMapPass): the baker runs
@@ -107,7 +109,8 @@ protected:
   /// VTK's templates, with a triangle geometry shader where VTK has none (the hull).
   void GetShaderTemplate(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override;
-  bool SupportsSearchMethod(const vtkReliefSearchMethod& method) override;
+  /// Only the methods that follow curved rays, Automatic as fixed steps of its tolerance.
+  const vtkReliefSearchMethod* DescribeSearch(int method) override;
   const char* GetUnsupportedSearchReason() override;
   std::string GetFrameSource() override;
   std::string GetFrameDefines() override;

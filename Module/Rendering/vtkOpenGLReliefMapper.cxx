@@ -31,6 +31,7 @@
 #include "vtk_glew.h"
 
 #include "vtkReliefCommon.h"
+#include "vtkReliefAutomaticSearch.h"
 #include "vtkReliefConeSearch.h"
 #include "vtkReliefFlatFrame.h"
 #include "vtkReliefFragmentDec.h"
@@ -54,6 +55,7 @@ namespace
 {
 constexpr int MinimumLinearSteps = 1;
 constexpr int MaximumLinearSteps = 512;
+constexpr double MaximumScreenTolerance = 100.0;
 constexpr int MaximumBinarySteps = 32;
 
 // Upper-left 3x3 of a VTK key matrix (stored transposed, ready for OpenGL).
@@ -156,7 +158,12 @@ const char* vtkOpenGLReliefMapper::GetSearchMethodAsString()
 
 const vtkReliefSearchMethod& vtkOpenGLReliefMapper::GetActiveSearch()
 {
-  return *vtkReliefSearchMethod::Get(this->ActiveSearchMethod);
+  return *this->DescribeSearch(this->ActiveSearchMethod);
+}
+
+const vtkReliefSearchMethod* vtkOpenGLReliefMapper::DescribeSearch(int method)
+{
+  return vtkReliefSearchMethod::Get(method);
 }
 
 void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
@@ -170,6 +177,23 @@ void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
   if (clamped != this->LinearSteps)
   {
     this->LinearSteps = clamped;
+    this->ModifiedShaderOptions();
+  }
+}
+
+void vtkOpenGLReliefMapper::SetScreenTolerance(double pixels)
+{
+  const double clamped =
+    std::isnan(pixels) ? 0.5 : std::clamp(pixels, 0.0, MaximumScreenTolerance);
+  if (clamped != pixels)
+  {
+    vtkWarningMacro("ScreenTolerance " << pixels << " is not a number of pixels in [0, "
+                                       << MaximumScreenTolerance << "]; using " << clamped
+                                       << " (0 searches exactly everywhere).");
+  }
+  if (clamped != this->ScreenTolerance)
+  {
+    this->ScreenTolerance = clamped;
     this->ModifiedShaderOptions();
   }
 }
@@ -416,18 +440,22 @@ vtkReliefAccelerationFilter* vtkOpenGLReliefMapper::NewAccelerationFilter(int me
 
 void vtkOpenGLReliefMapper::UpdateAcceleration(vtkRenderer* ren)
 {
-  const vtkReliefSearchMethod& method = *vtkReliefSearchMethod::Get(this->SearchMethod);
-  if (!this->SupportsSearchMethod(method))
+  const vtkReliefSearchMethod* described = this->DescribeSearch(this->SearchMethod);
+  if (!described)
   {
     if (!this->WarnedUnsupportedSearchMethod)
     {
       this->WarnedUnsupportedSearchMethod = true;
-      vtkWarningMacro(<< this->GetClassName() << " cannot search with " << method.Name << ": "
-                      << this->GetUnsupportedSearchReason() << " Searching with LinearBinary.");
+      vtkWarningMacro(<< this->GetClassName() << " cannot search with "
+                      << GetSearchMethodAsString(this->SearchMethod) << ": "
+                      << this->GetUnsupportedSearchReason()
+                      << " Searching with LinearBinary; Automatic (the default) suits "
+                         "every frame.");
     }
     this->SetActiveSearchMethod(LINEAR_BINARY);
     return;
   }
+  const vtkReliefSearchMethod& method = *described;
   if (method.NeedsAcceleration() && this->GetNumberOfInputConnections(2) > 0)
   {
     this->GetInputAlgorithm(2, 0)->Update();
@@ -743,7 +771,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
     std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
-      vtkReliefConeSearch);
+      vtkReliefConeSearch + vtkReliefAutomaticSearch);
   vtkShaderProgram::Substitute(
     declarations, "//VTK::Relief::Frame", this->GetFrameShaderCode("RELIEF_FRAGMENT_STAGE"));
   // VTK's texture and normal-map code reads its texture coordinates: make it read at the
@@ -841,6 +869,7 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
       "reliefNormalRatio", static_cast<float>(this->ReliefTextureFilter->GetDepthToTexelRatio()));
   }
   program->SetUniformf("reliefDepthScale", static_cast<float>(this->DrawnDepthScale));
+  program->SetUniformf("reliefScreenTolerance", static_cast<float>(this->ScreenTolerance));
   program->SetUniformi("reliefLinearSteps", this->LinearSteps);
   program->SetUniformi("reliefBinarySteps", this->BinarySteps);
   program->SetUniformi("reliefSelfShadowing", this->SelfShadowing ? 1 : 0);
@@ -920,6 +949,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SearchMethod: " << this->GetSearchMethodAsString() << "\n";
+  os << indent << "ScreenTolerance: " << this->ScreenTolerance << " pixels\n";
   os << indent << "ActiveSearchMethod: " << GetSearchMethodAsString(this->ActiveSearchMethod)
      << "\n";
   os << indent << "Acceleration: " << this->GetAcceleration() << "\n";

@@ -20,9 +20,9 @@
  * an acceleration image (MaximumMipmap's pyramid) build it themselves from the height
  * map, once per change of the map, unless one is given on port 2
  * (SetAccelerationConnection()). Every setter modifies the mapper, as VTK's do; those
- * that change only a uniform (DepthScale, step counts, SelfShadowing, FootprintShading,
- * DepthCorrection, DisplayMode, TwoSidedRelief) rebuild neither the shader nor the
- * buffers, the search method and the frame's options only the shader.
+ * that change only a uniform (DepthScale, ScreenTolerance, step counts, SelfShadowing,
+ * FootprintShading, DepthCorrection, DisplayMode, TwoSidedRelief) rebuild neither the
+ * shader nor the buffers, the search method and the frame's options only the shader.
  *
  * On the GPU the relief is one 16-bit depth texture at full resolution
  * (vtkReliefTextureFilter's depths lie on its levels): the searches read it, and the
@@ -69,13 +69,23 @@ public:
     EXACT_DDA = 3,
     SAFETY_RADIUS = 4,
     CONE_STEP = 5,
-    MAXIMUM_MIPMAP = 6
+    MAXIMUM_MIPMAP = 6,
+    AUTOMATIC = 7
   };
 
   ///@{
   /**
    * How the view ray meets the height field (Documentation/methods.md compares them).
-   * - LinearBinary (default): LinearSteps fixed steps, then BinarySteps of bisection
+   * - Automatic (default): per fragment, the least work that keeps the hit within
+   *   ScreenTolerance pixels of the exact one. Where the ray's whole run through the
+   *   relief spans less than the tolerance on screen, no search: one secant step places
+   *   the hit (normal mapping with parallax, 3 samples); where it crosses a few cells,
+   *   ExactDDA; over longer runs, ConeStep (so the mapper builds a cone map once per
+   *   height map). Exact wherever the relief shows more than the tolerance. On curved
+   *   rays (vtkOpenGLQuadricReliefMapper) fixed steps of half a texel, or of one tolerance
+   *   where a texel is smaller on screen, then bisection to a quarter of the tolerance.
+   *   The step counts are ignored.
+   * - LinearBinary: LinearSteps fixed steps, then BinarySteps of bisection
    *   (Policarpo et al. 2005). Fast; misses features thinner than a step.
    * - Linear: the fixed steps alone.
    * - Secant: the fixed steps, then BinarySteps of secant refinement (parallax occlusion
@@ -105,13 +115,14 @@ public:
   void SetSearchMethodToSafetyRadius() { this->SetSearchMethod(SAFETY_RADIUS); }
   void SetSearchMethodToConeStep() { this->SetSearchMethod(CONE_STEP); }
   void SetSearchMethodToMaximumMipmap() { this->SetSearchMethod(MAXIMUM_MIPMAP); }
+  void SetSearchMethodToAutomatic() { this->SetSearchMethod(AUTOMATIC); }
   const char* GetSearchMethodAsString();
   static const char* GetSearchMethodAsString(int method);
   ///@}
 
   /**
    * The method the last render searched with: SearchMethod, or LinearBinary when the
-   * method's acceleration image could not be had.
+   * method's acceleration image could not be had or the frame cannot search with it.
    */
   vtkGetMacro(ActiveSearchMethod, int);
 
@@ -145,6 +156,18 @@ public:
    */
   void SetSafetyRadiusTolerance(double tolerance);
   vtkGetMacro(SafetyRadiusTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * What the Automatic search may leave out, in pixels (default 0.5): its hit lies within
+   * this distance on screen of the exact one, and relief whose whole depth spans less on
+   * screen is not searched. 0 asks for an exact search everywhere. Values that are
+   * negative, not finite or above 100 are clamped, with a warning. A uniform: changing it
+   * rebuilds nothing.
+   */
+  void SetScreenTolerance(double pixels);
+  vtkGetMacro(ScreenTolerance, double);
   ///@}
 
   ///@{
@@ -340,9 +363,12 @@ protected:
   ///@}
   /// Binds one shader input to a point array of CurrentInput (unbinds it for nullptr).
   void MapReliefAttribute(const char* shaderInput, const char* arrayName);
-  /// Whether this mapper's frame can search with `method`; if not, LinearBinary is used.
-  virtual bool SupportsSearchMethod(const vtkReliefSearchMethod&) { return true; }
-  /// Why SupportsSearchMethod() refused, for the warning.
+  /**
+   * How this mapper's frame searches with `method` (vtkReliefSearchMethod::Get here), or
+   * null where it cannot: then LinearBinary is used.
+   */
+  virtual const vtkReliefSearchMethod* DescribeSearch(int method);
+  /// Why DescribeSearch() refused, for the warning.
   virtual const char* GetUnsupportedSearchReason() { return ""; }
   /// The frame's GLSL (vtkReliefCommon.glsl's frame interface): the tangent frame here.
   virtual std::string GetFrameSource();
@@ -367,7 +393,8 @@ protected:
    */
   void LightThroughRelief(std::string& fragmentSource, int lightComplexity, vtkActor* actor);
 
-  int SearchMethod = LINEAR_BINARY;
+  int SearchMethod = AUTOMATIC;
+  double ScreenTolerance = 0.5;
   int LinearSteps = 10;
   int BinarySteps = 5;
   double SafetyRadiusTolerance = 0.0;
@@ -382,7 +409,7 @@ protected:
   vtkNew<vtkReliefTextureFilter> ReliefTextureFilter;
   vtkNew<vtkOpenGLReliefTextures> Textures; // on the GPU: relief and acceleration
   bool InputNormals = false; // the shader reads an input normal map (the textures' say)
-  int ActiveSearchMethod = LINEAR_BINARY; // SearchMethod, or its fallback
+  int ActiveSearchMethod = AUTOMATIC; // SearchMethod, or its fallback
   bool WarnedAccelerationFallback = false;
   bool WarnedUnsupportedSearchMethod = false;
   vtkTimeStamp ShaderOptionsTime; // the search, frame, input normals or relief on/off changed

@@ -66,7 +66,14 @@ const vtkReliefSearchMethod Methods[] = {
     Method::CONE_BYTES, &NewFilter<vtkConeStepMapFilter>, nullptr, &SetConeUniforms },
   { vtkOpenGLReliefMapper::MAXIMUM_MIPMAP, "MaximumMipmap", "reliefSearchMaximumMipmap", false,
     Method::FLOAT_TEXELS, &NewFilter<vtkMaximumMipmapFilter>, nullptr, &SetPyramidUniforms },
+  { vtkOpenGLReliefMapper::AUTOMATIC, "Automatic", "reliefSearchAutomatic", false,
+    Method::CONE_BYTES, &NewFilter<vtkConeStepMapFilter>, nullptr, &SetConeUniforms },
 };
+
+// Automatic where rays curve: fixed steps sized to the screen tolerance, no cone map.
+const vtkReliefSearchMethod AutomaticOnCurvedRays = { vtkOpenGLReliefMapper::AUTOMATIC,
+  "Automatic", "reliefSearchAutomaticCurved", true, Method::NO_ACCELERATION, nullptr, nullptr,
+  nullptr };
 
 std::string Squeezed(const std::string& name)
 {
@@ -85,6 +92,16 @@ std::string Squeezed(const std::string& name)
 const vtkReliefSearchMethod* vtkReliefSearchMethod::Get(int id)
 {
   return id >= 0 && id < GetNumberOfMethods() ? &Methods[id] : nullptr;
+}
+
+const vtkReliefSearchMethod* vtkReliefSearchMethod::GetForCurvedRays(int id)
+{
+  if (id == vtkOpenGLReliefMapper::AUTOMATIC)
+  {
+    return &AutomaticOnCurvedRays;
+  }
+  const vtkReliefSearchMethod* method = Get(id);
+  return method && method->FollowsCurvedRays ? method : nullptr;
 }
 
 int vtkReliefSearchMethod::GetNumberOfMethods()

@@ -50,6 +50,12 @@ public:
 
   /// The method `id`, or null for an unknown one.
   static const vtkReliefSearchMethod* Get(int id);
+  /**
+   * The method `id` as it searches rays that curve (the quadric frame's): the method
+   * itself if it follows them, Automatic's stepping variant (which needs no acceleration
+   * image), or null where the method cannot search them.
+   */
+  static const vtkReliefSearchMethod* GetForCurvedRays(int id);
   /// Methods in order of Id, from 0.
   static int GetNumberOfMethods();
   /// The method named `name` (Name, any case, dashes ignored), or null.

@@ -1,8 +1,9 @@
 """Runs ReliefBench --quick on the accuracy study (one search method), the stability
-sweeps, the quadric and the derivative studies, and checks what it writes: the results
-table (every expected row, every figure a finite number, the truth error-free, the exact
-search closer to the truth than the dense mesh and the mesh than the bare polygons), a
-table per sweep, the quadric and derivative studies' rows, and every chart."""
+sweeps, the quadric, derivative, shading and automatic studies, and checks what it
+writes: the results table (every expected row, every figure a finite number, the truth
+error-free, the exact search closer to the truth than the dense mesh and the mesh than
+the bare polygons), a table per sweep, the quadric and derivative studies' rows, the
+automatic study's table and checks, and every chart."""
 import argparse
 import math
 import os
@@ -17,7 +18,8 @@ CHARTS = ["accuracy_time.png", "accuracy_samples.png", "sweep_angle.png", "sweep
           "sweep_curvature.png", "sweep_saddle.png", "sweep_crease.png", "sweep_depth.png",
           "quadric_silhouette_error.png", "derivative_accuracy.png", "derivative_frame_error.png",
           "derivative_seam_colour_crease.png", "derivative_seam_depth_crease.png",
-          "derivative_seam_colour_view.png", "derivative_seam_depth_view.png"]
+          "derivative_seam_colour_view.png", "derivative_seam_depth_view.png",
+          "automatic_samples.png", "automatic_wrong.png"]
 QUADRIC_FRAMES = ["flat", "quadric, approximate distance", "quadric, exact distance"]
 DERIVATIVE_FRAMES = ["tangent", "derivative"]
 SEAM_FRAMES = ["tangent, smooth normals", "tangent, split normals", "derivative, ComputeNormals",
@@ -161,6 +163,28 @@ def check_shading(text):
             figure(cell)
 
 
+def check_automatic(text):
+    """The automatic study's table for the steps map: a row per setting, each cell
+    "wrong % / samples" at each angle, Automatic's rows among them, and its checks."""
+    if "## Automatic quality" not in text:
+        fail("no automatic quality section")
+    section = text.split("## Automatic quality", 1)[1]
+    rows = {}
+    for line in section.splitlines():
+        cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
+        if line.startswith("| ") and " / " in line:
+            rows[cells[0]] = cells
+    for name in ("ConeStep", "LinearBinary 10+5 steps", "**Automatic 0.5 pixels**"):
+        if name not in rows:
+            fail("the automatic study has no row for " + name)
+        for cell in rows[name][1:-1]:
+            wrong, samples = (figure(part) for part in cell.split(" / "))
+            if not 0.0 <= wrong <= 100.0 or samples <= 0.0:
+                fail("an automatic study cell out of range: " + cell)
+    if "Pareto:" not in section or "Automatic 0.5 pixels: wrong pixels at most" not in section:
+        fail("the automatic study states no checks")
+
+
 def check_sharing(text):
     """The printed table of many actors on one height map (the --report section): one
     row for one actor and one for several, every figure a number, and several mappers of
@@ -202,7 +226,7 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric,derivative,shading,sharing",
+               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -214,7 +238,7 @@ def main():
         text = file.read()
     if "Machine:" not in text or "VTK" not in text:
         fail("the results do not name the machine and versions")
-    rows = table_rows(text)
+    rows = table_rows(text.split("## Stability", 1)[0])  # the accuracy table's rows
     for name in EXPECTED_ROWS:
         if name not in rows:
             fail("no row for " + name)
@@ -234,6 +258,7 @@ def main():
         check_chart(os.path.join(arguments.output, "images", chart))
     check_quadric_picture(os.path.join(arguments.output, "images", "quadric_outlines.png"))
     check_shading(run.stdout)
+    check_automatic(text)
     check_sharing(run.stdout)
     print("bench smoke run: results and charts well formed")
 

@@ -29,49 +29,6 @@
 
 namespace
 {
-// One point of the chart: a search method at one setting of its parameters.
-struct Setting
-{
-  std::string Family;
-  std::string Parameters;
-  int Method;
-  int LinearSteps = 10;
-  int BinarySteps = 5;
-  double Tolerance = 0.0;
-};
-
-std::vector<Setting> Settings()
-{
-  using Mapper = vtkOpenGLReliefMapper;
-  std::vector<Setting> settings;
-  for (int steps : { 4, 8, 16, 32, 64 })
-  {
-    settings.push_back({ "Linear", std::to_string(steps) + " steps", Mapper::LINEAR, steps, 0 });
-  }
-  for (auto steps : { std::pair<int, int>{ 5, 3 }, { 10, 5 }, { 20, 6 }, { 40, 8 } })
-  {
-    settings.push_back({ "LinearBinary",
-      std::to_string(steps.first) + "+" + std::to_string(steps.second) + " steps",
-      Mapper::LINEAR_BINARY, steps.first, steps.second });
-  }
-  for (auto steps : { std::pair<int, int>{ 8, 3 }, { 16, 5 }, { 32, 5 } })
-  {
-    settings.push_back({ "Secant",
-      std::to_string(steps.first) + "+" + std::to_string(steps.second) + " steps",
-      Mapper::SECANT, steps.first, steps.second });
-  }
-  settings.push_back({ "ExactDDA", "", Mapper::EXACT_DDA });
-  for (double tolerance : { 0.0, 0.05, 0.2 })
-  {
-    std::ostringstream label;
-    label << "e = " << tolerance;
-    settings.push_back({ "SafetyRadius", label.str(), Mapper::SAFETY_RADIUS, 10, 5, tolerance });
-  }
-  settings.push_back({ "ConeStep", "", Mapper::CONE_STEP });
-  settings.push_back({ "MaximumMipmap", "", Mapper::MAXIMUM_MIPMAP });
-  return settings;
-}
-
 struct Row
 {
   std::string Family;
@@ -277,6 +234,58 @@ std::string Table(const std::vector<Row>& rows)
 
 namespace ReliefAccuracy
 {
+std::vector<Setting> Settings()
+{
+  using Mapper = vtkOpenGLReliefMapper;
+  std::vector<Setting> settings;
+  for (int steps : { 4, 8, 16, 32, 64 })
+  {
+    settings.push_back({ "Linear", std::to_string(steps) + " steps", Mapper::LINEAR, steps, 0 });
+  }
+  for (auto steps : { std::pair<int, int>{ 5, 3 }, { 10, 5 }, { 20, 6 }, { 40, 8 } })
+  {
+    settings.push_back({ "LinearBinary",
+      std::to_string(steps.first) + "+" + std::to_string(steps.second) + " steps",
+      Mapper::LINEAR_BINARY, steps.first, steps.second });
+  }
+  for (auto steps : { std::pair<int, int>{ 8, 3 }, { 16, 5 }, { 32, 5 } })
+  {
+    settings.push_back({ "Secant",
+      std::to_string(steps.first) + "+" + std::to_string(steps.second) + " steps",
+      Mapper::SECANT, steps.first, steps.second });
+  }
+  settings.push_back({ "ExactDDA", "", Mapper::EXACT_DDA });
+  for (double tolerance : { 0.0, 0.05, 0.2 })
+  {
+    std::ostringstream label;
+    label << "e = " << tolerance;
+    settings.push_back({ "SafetyRadius", label.str(), Mapper::SAFETY_RADIUS, 10, 5, tolerance });
+  }
+  settings.push_back({ "ConeStep", "", Mapper::CONE_STEP });
+  settings.push_back({ "MaximumMipmap", "", Mapper::MAXIMUM_MIPMAP });
+  for (double pixels : { 0.5, 2.0 })
+  {
+    std::ostringstream label;
+    label << pixels << " pixel" << (pixels == 1.0 ? "" : "s");
+    settings.push_back({ "Automatic", label.str(), Mapper::AUTOMATIC, 10, 5, 0.0, pixels });
+  }
+  return settings;
+}
+
+void Apply(const Setting& setting, vtkOpenGLReliefMapper* mapper)
+{
+  mapper->SetSearchMethod(setting.Method);
+  mapper->SetLinearSteps(setting.LinearSteps);
+  mapper->SetBinarySteps(std::max(setting.BinarySteps, 1));
+  mapper->SetSafetyRadiusTolerance(setting.Tolerance);
+  mapper->SetScreenTolerance(setting.ScreenTolerance);
+}
+
+bool IsAutomatic(const Setting& setting)
+{
+  return setting.Method == vtkOpenGLReliefMapper::AUTOMATIC;
+}
+
 std::string Study(const Options& requested)
 {
   Options options = requested;
@@ -345,10 +354,7 @@ std::string Study(const Options& requested)
       continue;
     }
     shows.push_back([&, setting]() {
-      reliefMapper->SetSearchMethod(setting.Method);
-      reliefMapper->SetLinearSteps(setting.LinearSteps);
-      reliefMapper->SetBinarySteps(std::max(setting.BinarySteps, 1));
-      reliefMapper->SetSafetyRadiusTolerance(setting.Tolerance);
+      Apply(setting, reliefMapper);
       bench.Show(reliefActor);
     });
     shows.back()();

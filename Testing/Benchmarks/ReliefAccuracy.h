@@ -8,9 +8,33 @@
 #define ReliefAccuracy_h
 
 #include <string>
+#include <vector>
+
+class vtkOpenGLReliefMapper;
 
 namespace ReliefAccuracy
 {
+/// One point of the chart: a search method at one setting of its parameters.
+struct Setting
+{
+  std::string Family;
+  std::string Parameters;
+  int Method;
+  int LinearSteps = 10;
+  int BinarySteps = 5;
+  double Tolerance = 0.0;       ///< SafetyRadius's error bound
+  double ScreenTolerance = 0.5; ///< Automatic's, in pixels
+};
+
+/// Every fixed setting of every search method, then Automatic at 0.5 and 2 pixels.
+std::vector<Setting> Settings();
+
+/// Gives `mapper` the setting's method and parameters.
+void Apply(const Setting& setting, vtkOpenGLReliefMapper* mapper);
+
+/// Whether the setting is Automatic's, not a fixed one.
+bool IsAutomatic(const Setting& setting);
+
 struct Options
 {
   int HeightMapSize = 256; ///< the stones height map resampled to this square size

@@ -10,6 +10,7 @@
 // (Baboud and Decoret's (2006) Table 1), the acceleration filters' run times, and every method's
 // speed against its accuracy (ReliefAccuracy.h).
 #include "ReliefAccuracy.h"
+#include "ReliefAutomaticStudy.h"
 #include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
 #include "ReliefScene.h"
@@ -89,7 +90,8 @@ bool KnownSections(const std::string& list)
   {
     if (section != "plain" && section != "methods" && section != "filters" &&
       section != "accuracy" && section != "sweeps" && section != "quadric" &&
-      section != "derivative" && section != "sharing" && section != "shading")
+      section != "derivative" && section != "sharing" && section != "shading" &&
+      section != "automatic")
     {
       return false;
     }
@@ -388,7 +390,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
                    "                      filters, accuracy, sweeps, quadric, derivative,\n"
-                   "                      sharing, shading)\n"
+                   "                      sharing, shading, automatic)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
@@ -396,11 +398,12 @@ int main(int argc, char* argv[])
                    "accuracy, and its error as view angle, feature width, curvature and\n"
                    "depth scale sweep, the quadric frame's silhouettes on curved shapes, and\n"
                    "the derivative frame against the tangent frame, with its seams at creases,\n"
-                   "shading against supersampled geometry, and many actors on one height map.\n"
+                   "shading against supersampled geometry, the Automatic search against every\n"
+                   "fixed setting across the view angle, and many actors on one height map.\n"
                    "--report writes the timing tables, --results the accuracy study, the\n"
-                   "sweeps, the quadric, derivative and shading studies with their charts (PNG,\n"
-                   "in images/ beside FILE.md), each with machine and versions. --quick: small\n"
-                   "sizes and few frames, a smoke run.\n";
+                   "sweeps, the quadric, derivative, shading and automatic studies with their\n"
+                   "charts (PNG, in images/ beside FILE.md), each with machine and versions.\n"
+                   "--quick: small sizes and few frames, a smoke run.\n";
       return std::strcmp(argv[i], "--help") ? 2 : 0;
     }
   }
@@ -438,9 +441,12 @@ int main(int argc, char* argv[])
     { "LinearBinary 10+5", vtkOpenGLReliefMapper::LINEAR_BINARY, 10, 5, true, false },
     { "LinearBinary 10+5, no self-shadowing", vtkOpenGLReliefMapper::LINEAR_BINARY, 10, 5, false,
       false },
-    { "LinearBinary 10+5, footprint shading (the defaults)", vtkOpenGLReliefMapper::LINEAR_BINARY,
-      10, 5, true, true },
+    { "LinearBinary 10+5, footprint shading", vtkOpenGLReliefMapper::LINEAR_BINARY, 10, 5, true,
+      true },
     { "LinearBinary 32+8", vtkOpenGLReliefMapper::LINEAR_BINARY, 32, 8, true, false },
+    { "Automatic", vtkOpenGLReliefMapper::AUTOMATIC, 10, 5, true, false },
+    { "Automatic, footprint shading (the defaults)", vtkOpenGLReliefMapper::AUTOMATIC, 10, 5,
+      true, true },
   };
   auto wanted = [&](const std::string& section) {
     return only.empty() || ("," + only + ",").find("," + section + ",") != std::string::npos;
@@ -578,6 +584,19 @@ int main(int argc, char* argv[])
   const std::string shadingSection = wanted("shading")
     ? ReliefShadingStudy::Report(ReliefShadingStudy::Measure(shading), shading)
     : "(not run)\n";
+  ReliefAutomaticStudy::Options automatic;
+  automatic.ImageDirectory = accuracy.ImageDirectory;
+  if (quick)
+  {
+    automatic.Width = 160;
+    automatic.Height = 120;
+    automatic.HeightMapSize = 32;
+    automatic.Angles = { 0.0, 75.0 };
+    automatic.Maps = { "steps" };
+  }
+  const std::string automaticSection = wanted("automatic")
+    ? ReliefAutomaticStudy::Report(ReliefAutomaticStudy::Measure(automatic), automatic)
+    : "(not run)\n";
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -660,7 +679,8 @@ int main(int argc, char* argv[])
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
             << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection << "\n"
-            << shadingSection << "\n" << sharingContext << sharingTable;
+            << shadingSection << "\n" << automaticSection << "\n" << sharingContext
+            << sharingTable;
 
   if (!report.empty())
   {
@@ -682,7 +702,8 @@ int main(int argc, char* argv[])
         << "\n## Stability: where each method fails\n\n" << sweepsSection
         << "\n## Curved surfaces: the quadric frame's silhouettes\n\n" << quadricSection
         << "\n## Tangent-free relief: the derivative frame\n\n" << derivativeSection
-        << "\n## Shading true to the pixel's footprint\n\n" << shadingSection;
+        << "\n## Shading true to the pixel's footprint\n\n" << shadingSection
+        << "\n## Automatic quality: the search each fragment needs\n\n" << automaticSection;
     std::cout << "written to " << results << "\n";
   }
   return 0;

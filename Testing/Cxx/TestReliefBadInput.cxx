@@ -455,7 +455,12 @@ void HeightMapNotFinite()
   mapper->FootprintShadingOff(); // the samples of one search
   const Census census = Render(Grid(), mapper);
   CheckWarnedWithRelief(census, "non-finite height(s)", "NaN and infinite heights");
-  Check(census.MaxSamples <= 15, "NaN and infinite heights: every search ends within its steps");
+  // the display counts up to 255 samples a pixel
+  Check(census.MaxSamples < 255, "NaN and infinite heights: the default search ends");
+  mapper->SetSearchMethodToLinearBinary();
+  const Census fixed = Render(Grid(), mapper);
+  Check(fixed.MaxSamples <= 15, "NaN and infinite heights: every search ends within its steps");
+  CheckSane(fixed, "NaN and infinite heights, LinearBinary");
 }
 
 void StepsOutOfRange()
@@ -473,11 +478,37 @@ void StepsOutOfRange()
   Check(mapper->GetBinarySteps() == 32, "BinarySteps clamps to 32");
   Check(recorder->Count(vtkCommand::WarningEvent) == 4, "each clamp warns");
   mapper->SetBinarySteps(0);
-  mapper->FootprintShadingOff(); // the samples of one search
+  mapper->SetSearchMethodToLinearBinary(); // the method that takes the steps
+  mapper->FootprintShadingOff();           // the samples of one search
   const Census census = Render(Grid(), mapper);
   Check(census.Relief > 2 * HalfCovered && census.MaxSamples == 1,
     "one linear step and no bisection take exactly one sample");
   CheckSane(census, "one step");
+}
+
+void ScreenToleranceOutOfRange()
+{
+  auto mapper = NewMapper();
+  vtkNew<ReliefEventRecorder> recorder;
+  mapper->AddObserver(vtkCommand::WarningEvent, recorder);
+  mapper->SetScreenTolerance(-1.0);
+  Check(mapper->GetScreenTolerance() == 0.0, "a screen tolerance below 0 becomes 0");
+  mapper->SetScreenTolerance(NotANumber);
+  Check(mapper->GetScreenTolerance() == 0.5, "a screen tolerance that is NaN becomes 0.5");
+  for (double pixels : { 1000.0, Infinity })
+  {
+    mapper->SetScreenTolerance(pixels);
+    Check(mapper->GetScreenTolerance() == 100.0, "a screen tolerance above 100 becomes 100");
+  }
+  Check(recorder->Count(vtkCommand::WarningEvent) == 4, "each tolerance out of [0, 100] warns");
+  for (double pixels : { 0.0, 100.0 })
+  {
+    // exact everywhere, and no search at all: the relief is drawn either way
+    mapper->SetScreenTolerance(pixels);
+    const Census census = Render(Grid(), mapper);
+    Check(census.Relief > 2 * HalfCovered, "a screen tolerance of 0 or 100 draws the relief");
+    CheckSane(census, "a screen tolerance of 0 or 100");
+  }
 }
 
 void SafetyRadiusToleranceOutOfRange()
@@ -520,6 +551,7 @@ const struct
   { "HeightMapNot2D", HeightMapNot2D },
   { "HeightMapNotFinite", HeightMapNotFinite },
   { "StepsOutOfRange", StepsOutOfRange },
+  { "ScreenToleranceOutOfRange", ScreenToleranceOutOfRange },
   { "SafetyRadiusToleranceOutOfRange", SafetyRadiusToleranceOutOfRange },
 };
 }

@@ -95,11 +95,26 @@ int TestReliefSampleCount(int, char*[])
     }
   };
 
+  // the default, Automatic: rays 50 texels long, about 10 pixels on screen, stepped over
+  // the cone map; with a tolerance wider than that, no search: a secant step, 3 samples
+  Counts automatic = SampleCounts(window);
+  check(automatic.Pixels > 5000 && automatic.Minimum >= 1 && automatic.Maximum < 255,
+    "Automatic covers the view and ends");
+  const int automaticShaderBuilds = mapper->ShaderBuilds;
+  mapper->SetScreenTolerance(100.0);
+  Counts coarse = SampleCounts(window);
+  check(coarse.Pixels == automatic.Pixels && coarse.Maximum <= 3 && coarse.Mean < automatic.Mean,
+    "a tolerance wider than the relief on screen takes at most 3 samples");
+  check(mapper->ShaderBuilds == automaticShaderBuilds, "the tolerance is a uniform");
+  mapper->SetScreenTolerance(0.5);
+
   // LinearBinary 10 + 5: the linear search stops at its first hit (1 to 10 samples;
   // at least 2 here since no texel is at depth 0.1 or less), then bisects 5 times.
+  mapper->SetSearchMethodToLinearBinary();
   Counts linearBinary = SampleCounts(window);
   check(linearBinary.Pixels > 5000, "the square covers the view");
   check(linearBinary.Minimum >= 6 && linearBinary.Maximum <= 15, "LinearBinary takes 6 to 15");
+  check(automatic.Mean < linearBinary.Mean, "Automatic, exact here, takes fewer samples");
 
   // the footprint's four rays, searched alike where a pixel spans 0.7 texels or more (the
   // bricks' 512 texels on 2 tiles seen at 45 degrees: everywhere) and counted

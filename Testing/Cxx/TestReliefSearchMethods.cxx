@@ -56,7 +56,7 @@ int TestReliefSearchMethods(int, char*[])
   // names
   const std::vector<int>& methods = ReliefScene::SearchMethods();
   const char* names[] = { "Linear", "LinearBinary", "Secant", "ExactDDA", "SafetyRadius",
-    "ConeStep", "MaximumMipmap" };
+    "ConeStep", "MaximumMipmap", "Automatic" };
   check(methods.size() == std::size(names), "every method is listed");
   for (size_t k = 0; k < methods.size(); ++k)
   {
@@ -65,7 +65,7 @@ int TestReliefSearchMethods(int, char*[])
   }
   mapper->SetSearchMethod(42);
   check(messages->Count(vtkCommand::ErrorEvent) == 1 &&
-      mapper->GetSearchMethod() == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP,
+      mapper->GetSearchMethod() == vtkOpenGLReliefMapper::AUTOMATIC,
     "an unknown method is an error and changes nothing");
   messages->Clear();
 

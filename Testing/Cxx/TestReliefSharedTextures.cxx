@@ -67,6 +67,8 @@ int TestReliefSharedTextures(int, char*[])
     auto mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
     mapper->SetInputData(ReliefScene::Square(1.0));
     mapper->SetDepthScale(0.05);
+    // the depth texture alone first; the acceleration images below
+    mapper->SetSearchMethodToLinearBinary();
     mapper->AddObserver(vtkCommand::ErrorEvent, messages);
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     auto actor = ReliefScene::ReliefActor(mapper, "");
@@ -179,6 +181,7 @@ int TestReliefSharedTextures(int, char*[])
     vtkNew<vtkOpenGLReliefMapper> mapper;
     mapper->SetInputData(ReliefScene::Square(1.0));
     mapper->SetHeightMapData(heights);
+    mapper->SetSearchMethodToLinearBinary();
     otherRenderer->AddActor(ReliefScene::ReliefActor(mapper, ""));
     ReliefScene::ViewSquare(otherRenderer, 30.0);
     other->Render();

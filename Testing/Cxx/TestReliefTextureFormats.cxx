@@ -90,6 +90,7 @@ int TestReliefTextureFormats(int, char*[])
   mapper->SetSelfShadowing(false);
   // each pixel lit by the normal at its hit: what is compared is how normals are read
   mapper->SetFootprintShading(false);
+  mapper->SetSearchMethodToLinearBinary(); // the depth alone first
   renderer->AddActor(ReliefScene::ReliefActor(mapper, ""));
   ReliefScene::ViewSquare(renderer, 40.0);
   vtkNew<ReliefEventRecorder> messages;
@@ -115,6 +116,7 @@ int TestReliefTextureFormats(int, char*[])
     { vtkOpenGLReliefMapper::CONE_STEP, 2L * Width * Height },
     { vtkOpenGLReliefMapper::SAFETY_RADIUS, 4L * Width * Height },
     { vtkOpenGLReliefMapper::MAXIMUM_MIPMAP, 4L * atlas[0] * atlas[1] },
+    { vtkOpenGLReliefMapper::AUTOMATIC, 2L * Width * Height }, // the cone map
   };
   for (const auto& method : accelerated)
   {

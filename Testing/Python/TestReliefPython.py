@@ -69,7 +69,8 @@ class TestReliefPython(unittest.TestCase):
 
     def test_search_method_round_trips(self):
         mapper = vtkOpenGLReliefMapper()
-        self.assertEqual(mapper.GetSearchMethodAsString(), "LinearBinary")
+        self.assertEqual(mapper.GetSearchMethodAsString(), "Automatic")
+        self.assertEqual(mapper.GetScreenTolerance(), 0.5)
         mapper.SetSearchMethodToLinear()
         self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.LINEAR)
         self.assertEqual(mapper.GetSearchMethodAsString(), "Linear")

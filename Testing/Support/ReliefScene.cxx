@@ -243,6 +243,7 @@ void SetStones(vtkOpenGLReliefMapper* mapper, vtkPolyData* surface, double depth
   mapper->SetInputData(surface);
   mapper->SetHeightMapData(ReadImage("stones_height.png"));
   mapper->SetDepthScale(depthScale);
+  mapper->SetSearchMethodToLinearBinary();
   mapper->SetLinearSteps(32);
   mapper->SetBinarySteps(6);
 }

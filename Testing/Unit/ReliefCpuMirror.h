@@ -198,6 +198,8 @@ inline Search FindSearch(const std::string& function)
     RELIEF_MIRROR_SEARCH(reliefSearchSafetyRadius),
     RELIEF_MIRROR_SEARCH(reliefSearchConeStep),
     RELIEF_MIRROR_SEARCH(reliefSearchMaximumMipmap),
+    RELIEF_MIRROR_SEARCH(reliefSearchAutomatic),
+    RELIEF_MIRROR_SEARCH(reliefSearchAutomaticCurved),
   };
 #undef RELIEF_MIRROR_SEARCH
   const auto found = searches.find(function);

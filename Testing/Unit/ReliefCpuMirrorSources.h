@@ -7,6 +7,7 @@
 #include "vtkReliefGridSearch.glsl"
 #include "vtkReliefSafetySearch.glsl"
 #include "vtkReliefConeSearch.glsl"
+#include "vtkReliefAutomaticSearch.glsl"
 #include "vtkReliefTangentBasis.glsl"
 #ifdef RELIEF_MIRROR_FLAT_FRAME
 #include "vtkReliefFlatFrame.glsl"

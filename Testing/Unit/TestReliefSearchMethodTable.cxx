@@ -65,4 +65,30 @@ TEST(ReliefSearchMethodTable, EveryMethodIsDescribedOnceAndFoundWhereItIsRead)
   EXPECT_EQ(vtkReliefSearchMethod::Find("cone-step"), vtkReliefSearchMethod::Find("ConeStep"));
   EXPECT_EQ(vtkReliefSearchMethod::Find("Bisection"), nullptr);
 }
+
+TEST(ReliefSearchMethodTable, CurvedRaysGetTheMethodsThatFollowThemAndAutomaticsSteps)
+{
+  const std::string sources = ShaderSources();
+  for (int id = 0; id < vtkReliefSearchMethod::GetNumberOfMethods(); ++id)
+  {
+    const vtkReliefSearchMethod* method = vtkReliefSearchMethod::Get(id);
+    const vtkReliefSearchMethod* curved = vtkReliefSearchMethod::GetForCurvedRays(id);
+    if (std::string(method->Name) != "Automatic")
+    {
+      EXPECT_EQ(curved, method->FollowsCurvedRays ? method : nullptr) << method->Name;
+      continue;
+    }
+    // Automatic keeps its id and name, steps without the cone map it reads on straight rays
+    ASSERT_NE(curved, nullptr);
+    EXPECT_NE(curved, method);
+    EXPECT_EQ(curved->Id, id);
+    EXPECT_STREQ(curved->Name, method->Name);
+    EXPECT_TRUE(curved->FollowsCurvedRays);
+    EXPECT_FALSE(curved->NeedsAcceleration());
+    EXPECT_TRUE(method->NeedsAcceleration());
+    EXPECT_NE(sources.find(std::string("ReliefHit ") + curved->Function + "("), std::string::npos);
+    EXPECT_NE(ReliefCpuMirror::FindSearch(curved->Function), nullptr);
+  }
+  EXPECT_EQ(vtkReliefSearchMethod::GetForCurvedRays(-1), nullptr);
+}
 }

@@ -19,7 +19,12 @@ struct ReliefRay
                   // quadric the depth of a straight view ray is quadratic
                   // (vtkReliefQuadricFrame.glsl)
   vec4 exact;     // the exact distance's terms (vtkReliefQuadricFrame.glsl); w = 0: not used
+  float screenRun; // how far its (u, v) move from t = 0 to 1 on screen, in units of the
+                   // screen tolerance (reliefScreenRun): the Automatic search's budget;
+                   // RELIEF_UNKNOWN_RUN where not known, which asks for an exact search
 };
+
+#define RELIEF_UNKNOWN_RUN 1e30f
 
 struct ReliefHit
 {
@@ -67,7 +72,24 @@ ReliefRay reliefViewRay(vec2 entryUV, vec3 direction)
   ray.direction = vec3(direction.x / descent, direction.y / descent, 1.0f);
   ray.bend = 0.0f;
   ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  ray.screenRun = RELIEF_UNKNOWN_RUN;
   return ray;
+}
+
+// The screen distance, in units of `tolerance` pixels, that a move of `run` in (u, v)
+// spans where moving one pixel along screen x changes (u, v) by alongX and along y by
+// alongY (the entry's derivatives): the pixel offset p solving alongX p.x + alongY p.y =
+// run. RELIEF_UNKNOWN_RUN where the derivatives hold no mapping or tolerance is 0.
+float reliefScreenRun(vec2 run, vec2 alongX, vec2 alongY, float tolerance)
+{
+  float determinant = alongX.x * alongY.y - alongX.y * alongY.x;
+  float scale = max(dot(alongX, alongX), dot(alongY, alongY));
+  if (!(tolerance > 0.0f) || !(abs(determinant) > 1e-12f * scale) || !(scale > 0.0f))
+  {
+    return RELIEF_UNKNOWN_RUN;
+  }
+  vec2 pixels = vec2(alongY.y * run.x - alongY.x * run.y, alongX.x * run.y - alongX.y * run.x);
+  return min(length(pixels) / (abs(determinant) * tolerance), RELIEF_UNKNOWN_RUN);
 }
 
 // The light ray of a hit: from where the ray toward the light leaves the relief
@@ -84,6 +106,7 @@ ReliefRay reliefLightRay(vec3 hitPosition, vec3 lightDirection)
   ray.direction = hitPosition - ray.origin;
   ray.bend = 0.0f;
   ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  ray.screenRun = RELIEF_UNKNOWN_RUN;
   return ray;
 }
 

@@ -38,7 +38,8 @@ uniform vec2 reliefConeRange; // vtkConeStepMapFilter's maximum ratio and RATIO_
   reliefConeRange)
 #endif
 
-ReliefHit reliefSearchConeStep(ReliefRay ray, int linearSteps, int refinementSteps)
+// The search; a bracket no longer than `span` in t ends it at its far end (0: exact).
+ReliefHit reliefConeStepWithin(ReliefRay ray, float span)
 {
   ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
   vec2 signs = reliefStepSigns(grid);
@@ -135,8 +136,13 @@ ReliefHit reliefSearchConeStep(ReliefRay ray, int linearSteps, int refinementSte
   }
   if (bracketStart >= 0.0f)
   {
-    return reliefRefineCrossing(ray, grid, bracketStart, tHit, samples);
+    return reliefRefineCrossingWithin(ray, grid, bracketStart, tHit, samples, span);
   }
   return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
                       : reliefGridEnd(ray, grid, samples);
+}
+
+ReliefHit reliefSearchConeStep(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefConeStepWithin(ray, 0.0f);
 }

@@ -9,6 +9,7 @@ uniform sampler2D reliefAccelerationTexture; // what the search method reads bes
 uniform vec2 reliefTextureSize;    // texels per tile
 uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio (input normals only)
 uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief
+uniform float reliefScreenTolerance; // pixels the Automatic search may leave out
 uniform int reliefLinearSteps;
 uniform int reliefBinarySteps;
 uniform int reliefSelfShadowing;
@@ -78,6 +79,15 @@ vec2 reliefFieldGradient(vec2 uv)
 #error "no search method: the mapper defines RELIEF_SEARCH as one of the search functions"
 #endif
 //VTK::Relief::Frame
+
+// A frame's view ray of `fragment`, with its run on screen for the Automatic search.
+ReliefRay reliefScreenViewRay(ReliefFrame frame, ReliefFragment fragment)
+{
+  ReliefRay ray = reliefFrameViewRay(frame, fragment);
+  ray.screenRun = reliefScreenRun(vec2(ray.direction.x, ray.direction.y),
+    fragment.tcoordAlongX, fragment.tcoordAlongY, reliefScreenTolerance);
+  return ray;
+}
 
 // The frame's shading basis, for the lighting: gradients of u and v in view space, and
 // the unit normal depth is measured against.
@@ -183,7 +193,7 @@ vec3 reliefShadeFootprint(
     ReliefFragment quarter = fragment;
     quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
       reliefRotatedGrid[k].y * fragment.tcoordAlongY;
-    ReliefRay quarterRay = reliefFrameViewRay(frame, quarter);
+    ReliefRay quarterRay = reliefScreenViewRay(frame, quarter);
     ReliefHit hit = RELIEF_SEARCH(quarterRay, reliefLinearSteps, reliefBinarySteps);
     samples += hit.samples;
     if (!reliefFrameRayLeft(frame, quarterRay, hit))

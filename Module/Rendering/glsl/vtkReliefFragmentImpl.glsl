@@ -37,7 +37,7 @@
     {
       discard;
     }
-    ReliefRay reliefViewRayTS = reliefFrameViewRay(reliefFrame, reliefFragment);
+    ReliefRay reliefViewRayTS = reliefScreenViewRay(reliefFrame, reliefFragment);
     reliefViewHit = RELIEF_SEARCH(reliefViewRayTS, reliefLinearSteps, reliefBinarySteps);
     if (reliefFrameRayLeft(reliefFrame, reliefViewRayTS, reliefViewHit))
     {

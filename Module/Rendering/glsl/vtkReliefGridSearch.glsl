@@ -160,11 +160,14 @@ float reliefCellGap(ReliefGridRay grid, float t)
 // The crossing in [above, below] of a ray above the field at `above`, on or below it at
 // `below`, that enters the field once between (the bracket a safety radius or a cone
 // gives): bisection down to RELIEF_WALK_CELLS cells, then an exact walk. `samples`
-// counts on from the caller's.
-ReliefHit reliefRefineCrossing(ReliefRay ray, ReliefGridRay grid, float above, float below, int samples)
+// counts on from the caller's. A bracket no longer than `span` in t ends the search at
+// its far end, without the walk (the Automatic search's tolerance; 0: exact).
+ReliefHit reliefRefineCrossingWithin(
+  ReliefRay ray, ReliefGridRay grid, float above, float below, int samples, float span)
 {
   float cellsPerT = max(abs(grid.direction.x), abs(grid.direction.y));
-  for (int i = 0; i < 64 && (below - above) * cellsPerT > RELIEF_WALK_CELLS; ++i)
+  for (int i = 0;
+       i < 64 && (below - above) * cellsPerT > RELIEF_WALK_CELLS && below - above > span; ++i)
   {
     float middle = 0.5f * (above + below);
     samples += 1;
@@ -177,9 +180,19 @@ ReliefHit reliefRefineCrossing(ReliefRay ray, ReliefGridRay grid, float above, f
       above = middle;
     }
   }
+  if (span > 0.0f && below - above <= span)
+  {
+    return reliefGridHit(ray, grid, below, true, samples); // close enough: no walk
+  }
   ReliefHit walk = reliefWalkCells(ray, grid, above, below, samples);
   // the walk's own rounding may put the crossing a hair past `below`
   return walk.hit ? walk : reliefGridHit(ray, grid, below, true, walk.samples);
+}
+
+// The exact refinement.
+ReliefHit reliefRefineCrossing(ReliefRay ray, ReliefGridRay grid, float above, float below, int samples)
+{
+  return reliefRefineCrossingWithin(ray, grid, above, below, samples, 0.0f);
 }
 
 // The end of a search that met nothing before t = 1: a view ray is as deep as the deepest

@@ -137,6 +137,7 @@ ReliefRay reliefQuadricViewRay(vec2 entryUV, vec3 view, vec2 scale, vec2 terms, 
   ray.direction = vec3(view.x / scale.x * range, view.y / scale.y * range, terms.y * range);
   ray.bend = terms.x * range * range;
   ray.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  ray.screenRun = RELIEF_UNKNOWN_RUN;
   return ray;
 }
 
