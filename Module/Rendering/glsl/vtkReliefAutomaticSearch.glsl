@@ -40,7 +40,8 @@
 // The ray's (u, v) run from t = 0 to 1 in texels.
 vec2 reliefRunTexels(ReliefRay ray)
 {
-  return vec2(abs(ray.direction.x * RELIEF_DEPTH_SIZE.x), abs(ray.direction.y * RELIEF_DEPTH_SIZE.y));
+  vec2 size = RELIEF_DEPTH_SIZE;
+  return vec2(abs(ray.direction.x * size.x), abs(ray.direction.y * size.y));
 }
 
 // A ray whose whole run lies within the tolerance on screen: one secant step between its
