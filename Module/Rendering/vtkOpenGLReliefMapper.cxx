@@ -158,7 +158,9 @@ const char* vtkOpenGLReliefMapper::GetSearchMethodAsString()
 
 const vtkReliefSearchMethod& vtkOpenGLReliefMapper::GetActiveSearch()
 {
-  return *this->DescribeSearch(this->ActiveSearchMethod);
+  // a method this frame cannot search with is LinearBinary until the next render says so
+  const vtkReliefSearchMethod* method = this->DescribeSearch(this->ActiveSearchMethod);
+  return method ? *method : *vtkReliefSearchMethod::Get(LINEAR_BINARY);
 }
 
 const vtkReliefSearchMethod* vtkOpenGLReliefMapper::DescribeSearch(int method)

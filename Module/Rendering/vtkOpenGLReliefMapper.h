@@ -81,10 +81,11 @@ public:
    *   relief spans less than the tolerance on screen, no search: one secant step places
    *   the hit (normal mapping with parallax, 3 samples); where it crosses a few cells,
    *   ExactDDA; over longer runs, ConeStep (so the mapper builds a cone map once per
-   *   height map). Exact wherever the relief shows more than the tolerance. On curved
-   *   rays (vtkOpenGLQuadricReliefMapper) fixed steps of half a texel, or of one tolerance
-   *   where a texel is smaller on screen, then bisection to a quarter of the tolerance.
-   *   The step counts are ignored.
+   *   height map, shared with ConeStep's), ending within the tolerance; rays over 2048
+   *   cells in at most 256 steps. On curved rays (vtkOpenGLQuadricReliefMapper) fixed
+   *   steps of half a texel, or of one tolerance where that is longer on screen, then
+   *   bisection to a quarter of the tolerance. The step counts are ignored but for the
+   *   self-shadow rays.
    * - LinearBinary: LinearSteps fixed steps, then BinarySteps of bisection
    *   (Policarpo et al. 2005). Fast; misses features thinner than a step.
    * - Linear: the fixed steps alone.

@@ -120,8 +120,9 @@ void ForgetReleased(Registry& registry)
 // One relief texture: its window, the height map (held, so its address stays its own),
 // its modification time and the four settings of vtkReliefTextureFilter.
 using ReliefKey = std::tuple<vtkWindow*, vtkImageData*, vtkMTimeType, int, int, double, bool>;
-// One acceleration image of a relief: the method, its setting, and the precomputed image
-// with its modification time when one is given.
+// One acceleration image of a relief: its kind (methods reading the same image share
+// it), its setting, and the precomputed image with its modification time when one is
+// given.
 using AccelerationKey = std::tuple<const vtkOpenGLReliefTextures::SharedRelief*, int, double,
   vtkImageData*, vtkMTimeType>;
 
@@ -299,7 +300,7 @@ bool vtkOpenGLReliefTextures::UpdateAcceleration(vtkOpenGLRenderWindow* window,
   }
   // the setting counts only where the method's own filter reads it
   const double setting = precomputed || !method.ConfigureFilter ? 0.0 : safetyRadiusTolerance;
-  const AccelerationKey key{ this->Relief.get(), method.Id, setting, precomputed,
+  const AccelerationKey key{ this->Relief.get(), method.GetAccelerationKind(), setting, precomputed,
     precomputed ? precomputed->GetMTime() : 0 };
   auto& registry = SharedAccelerations();
   std::shared_ptr<SharedAcceleration> shared = registry[key].lock();

@@ -121,6 +121,19 @@ const vtkReliefSearchMethod* vtkReliefSearchMethod::Find(const std::string& name
   return nullptr;
 }
 
+int vtkReliefSearchMethod::GetAccelerationKind() const
+{
+  for (const vtkReliefSearchMethod& method : Methods)
+  {
+    if (method.NewAccelerationFilter == this->NewAccelerationFilter &&
+      method.Encoding == this->Encoding)
+    {
+      return method.Id;
+    }
+  }
+  return this->Id;
+}
+
 std::string vtkReliefSearchMethod::GetShaderDefine() const
 {
   return std::string("#define RELIEF_SEARCH ") + this->Function + "\n";

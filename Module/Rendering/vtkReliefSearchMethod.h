@@ -61,6 +61,11 @@ public:
   /// The method named `name` (Name, any case, dashes ignored), or null.
   static const vtkReliefSearchMethod* Find(const std::string& name);
 
+  /**
+   * The Id of the first method that reads the same acceleration image (same filter and
+   * encoding): Automatic's cone map is ConeStep's, built and uploaded once for both.
+   */
+  int GetAccelerationKind() const;
   /// Whether the method reads an acceleration image.
   bool NeedsAcceleration() const { return this->Encoding != NO_ACCELERATION; }
   /// The fragment shader's selection of the method.

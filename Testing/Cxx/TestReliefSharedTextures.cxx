@@ -142,6 +142,11 @@ int TestReliefSharedTextures(int, char*[])
   std::cout << "ConeStep: " << bytesInUse() << " bytes in use, " << withCones << " a mapper\n";
   check(withCones > one && bytesInUse() == withCones, "one cone map built for four mappers");
   check(LiveTextures(window) == texturesWithoutRelief + 2, "a depth texture and a cone map in GL");
+  mappers[1]->SetSearchMethodToAutomatic();
+  window->Render();
+  check(bytesInUse() == withCones && LiveTextures(window) == texturesWithoutRelief + 2,
+    "Automatic reads ConeStep's cone map, not a copy");
+  mappers[1]->SetSearchMethodToConeStep();
   mappers[0]->SetSearchMethodToMaximumMipmap();
   window->Render();
   check(bytesInUse() == withCones + mappers[0]->GetTextureBytes() - one,

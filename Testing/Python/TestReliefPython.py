@@ -71,9 +71,13 @@ class TestReliefPython(unittest.TestCase):
         mapper = vtkOpenGLReliefMapper()
         self.assertEqual(mapper.GetSearchMethodAsString(), "Automatic")
         self.assertEqual(mapper.GetScreenTolerance(), 0.5)
+        mapper.SetScreenTolerance(2.0)
+        self.assertEqual(mapper.GetScreenTolerance(), 2.0)
         mapper.SetSearchMethodToLinear()
         self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.LINEAR)
         self.assertEqual(mapper.GetSearchMethodAsString(), "Linear")
+        mapper.SetSearchMethodToAutomatic()
+        self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.AUTOMATIC)
         mapper.SetSearchMethodToLinearBinary()
         self.assertEqual(mapper.GetSearchMethodAsString(), "LinearBinary")
 

@@ -6,6 +6,7 @@
 // curved rays.
 #include "ReliefSearchReference.h"
 
+#include <limits>
 #include <set>
 
 namespace
@@ -63,6 +64,22 @@ double ScreenError(const ReliefRay& ray, double t, double reference)
   return std::abs(t - reference) * ray.screenRun;
 }
 
+TEST(ReliefScreenRun, SolvesForThePixelOffsetOfTheRun)
+{
+  // one pixel along x moves (u, v) by (0.01, 0), along y by (0.005, 0.02): a skewed
+  // footprint; the run (0.03, 0.04) is the offset (2, 2) pixels, 2 sqrt(2) of them
+  const vec2 alongX(0.01f, 0.0f);
+  const vec2 alongY(0.005f, 0.02f);
+  const vec2 run(0.03f, 0.04f);
+  EXPECT_NEAR(reliefScreenRun(run, alongX, alongY, 1.0f), 2.0 * std::sqrt(2.0), 1e-5);
+  EXPECT_NEAR(reliefScreenRun(run, alongX, alongY, 0.5f), 4.0 * std::sqrt(2.0), 1e-5);
+  // no tolerance, or derivatives that hold no mapping: not known, which asks for exactness
+  EXPECT_EQ(reliefScreenRun(run, alongX, alongY, 0.0f), RELIEF_UNKNOWN_RUN);
+  EXPECT_EQ(reliefScreenRun(run, alongX, 2.0f * alongX, 0.5f), RELIEF_UNKNOWN_RUN);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(reliefScreenRun(vec2(nan, 0.04f), alongX, alongY, 0.5f), RELIEF_UNKNOWN_RUN);
+}
+
 TEST_F(ReliefAutomaticSearch, IsExactWhereTheScreenRunIsNotKnown)
 {
   size_t k = 0;
@@ -110,9 +127,9 @@ TEST_F(ReliefAutomaticSearch, SpendsLeastWhereTheReliefIsBelowTheToleranceAndWal
   EXPECT_EQ(reliefSearchAutomatic(WithScreenRun(oblique, 0.8f), 0, 0).samples, 3);
   // a run of a few cells: ExactDDA's walk, one sample a cell
   const ReliefRay walked = WithScreenRun(steep, 10.0f);
-  EXPECT_EQ(reliefSearchAutomatic(walked, 0, 0).samples, reliefSearchExactDDA(walked, 0, 0).samples);
-  // a long run: ConeStep, exact where the run is not known, and ending sooner where a
-  // bracket lies within the tolerance
+  EXPECT_EQ(
+    reliefSearchAutomatic(walked, 0, 0).samples, reliefSearchExactDDA(walked, 0, 0).samples);
+  // a long run: ConeStep, exact where the run is not known
   const ReliefRay stepped = WithScreenRun(oblique, RELIEF_UNKNOWN_RUN);
   const int coneSamples = reliefSearchConeStep(stepped, 0, 0).samples;
   EXPECT_EQ(reliefSearchAutomatic(stepped, 0, 0).samples, coneSamples);

@@ -10,8 +10,9 @@
 //   normal mapping with parallax;
 // - longer straight runs: ConeStep, whose steps grow with the run far more slowly,
 //   ending where the bracket it found lies within the tolerance on screen and within
-//   1/20 of the depth (exact where the run is not known); beyond 2048 cells, the curved
-//   rays' steps, whose cost is bounded;
+//   1/20 of the depth; beyond 2048 cells, the curved rays' steps, whose cost is bounded
+//   (they may pass features narrower than a step: the one place the regimes can part by
+//   more than the tolerance). Where the run is not known (ScreenTolerance 0), exact;
 // - curved rays (the quadric frame, reliefSearchAutomaticCurved): fixed steps of half a
 //   texel, or of one tolerance where that is longer on screen, then bisection until the
 //   bracket spans a quarter of the tolerance and 1/256 of the depth.
@@ -21,9 +22,9 @@
 // vtkReliefConeSearch.glsl before it.
 
 // Manhattan cells of the whole run up to which ExactDDA's walk, one sample a cell, costs
-// less than ConeStep's cone reads, bisection and final cells (Documentation/results.md,
-// automatic quality: the samples of both against the run), and less than the secant's
-// three samples.
+// less than ConeStep's cone reads, bisection and final cells (chosen on the automatic
+// study's stones map, Documentation/results.md), and less than the secant's three
+// samples.
 #define RELIEF_AUTOMATIC_WALK_CELLS 6.0f
 #define RELIEF_AUTOMATIC_SECANT_CELLS 2.0f
 // The most of the depth a bracket that ends the search may span: the written depth's
@@ -45,7 +46,8 @@ vec2 reliefRunTexels(ReliefRay ray)
 }
 
 // A ray whose whole run lies within the tolerance on screen: one secant step between its
-// ends.
+// ends. Its depth is the secant's (not bounded), and where that step lands below the
+// field the self-shadow starts at the entry, which lights the pixel.
 ReliefHit reliefSearchWithinTolerance(ReliefRay ray)
 {
   return reliefSearchSecant(ray, 1, 1);
@@ -82,7 +84,7 @@ ReliefHit reliefSearchAutomatic(ReliefRay ray, int linearSteps, int refinementSt
   {
     return reliefSearchWithinTolerance(ray);
   }
-  if (cells > RELIEF_AUTOMATIC_CONE_CELLS)
+  if (cells > RELIEF_AUTOMATIC_CONE_CELLS && ray.screenRun < RELIEF_UNKNOWN_RUN)
   {
     return reliefSearchAutomaticCurved(ray, 0, 0); // bounded: at most 256 steps
   }

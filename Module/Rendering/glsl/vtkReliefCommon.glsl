@@ -84,12 +84,15 @@ float reliefScreenRun(vec2 run, vec2 alongX, vec2 alongY, float tolerance)
 {
   float determinant = alongX.x * alongY.y - alongX.y * alongY.x;
   float scale = max(dot(alongX, alongX), dot(alongY, alongY));
-  if (!(tolerance > 0.0f) || !(abs(determinant) > 1e-12f * scale) || !(scale > 0.0f))
+  // a determinant within float cancellation of zero holds no mapping
+  if (!(tolerance > 0.0f) || !(abs(determinant) > 1e-6f * scale))
   {
     return RELIEF_UNKNOWN_RUN;
   }
   vec2 pixels = vec2(alongY.y * run.x - alongY.x * run.y, alongX.x * run.y - alongX.y * run.x);
-  return min(length(pixels) / (abs(determinant) * tolerance), RELIEF_UNKNOWN_RUN);
+  float tolerances = length(pixels) / (abs(determinant) * tolerance);
+  bool usable = tolerances >= 0.0f && tolerances < RELIEF_UNKNOWN_RUN; // not NaN
+  return usable ? tolerances : RELIEF_UNKNOWN_RUN;
 }
 
 // The light ray of a hit: from where the ray toward the light leaves the relief

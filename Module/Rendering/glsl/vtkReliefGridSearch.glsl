@@ -182,7 +182,8 @@ ReliefHit reliefRefineCrossingWithin(
   }
   if (span > 0.0f && below - above <= span)
   {
-    return reliefGridHit(ray, grid, below, true, samples); // close enough: no walk
+    // close enough: no walk; `above` is known above the field, the self-shadow's start
+    return reliefHitAt(ray, below, above, true, samples);
   }
   ReliefHit walk = reliefWalkCells(ray, grid, above, below, samples);
   // the walk's own rounding may put the crossing a hair past `below`
