@@ -304,18 +304,21 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
       pixel.eyeDistance = glm::length(positionVC);
       const mirror::ReliefFrame frame = mirror::reliefTangentFrame(
         mirror::reliefTangentBasis(vertex.normal, vertex.tangent, vertex.textureScale, true));
-      // the entry's change to the next pixels, for the Automatic search's budget
-      Fragment alongX;
-      Fragment alongY;
-      if (!FragmentAt(view, scene.Tiles, i + 1, j, alongX) ||
-        !FragmentAt(view, scene.Tiles, i, j + 1, alongY))
-      {
-        continue;
-      }
       mirror::ReliefRay ray = mirror::reliefFrameViewRay(frame, pixel);
-      ray.screenRun = mirror::reliefScreenRun(glm::vec2(ray.direction.x, ray.direction.y),
-        alongX.TCoord - fragment.TCoord, alongY.TCoord - fragment.TCoord,
-        static_cast<float>(mapper->GetScreenTolerance()));
+      if (method == "Automatic")
+      {
+        // the entry's change to the next pixels: the Automatic search's budget
+        Fragment alongX;
+        Fragment alongY;
+        if (!FragmentAt(view, scene.Tiles, i + 1, j, alongX) ||
+          !FragmentAt(view, scene.Tiles, i, j + 1, alongY))
+        {
+          continue;
+        }
+        ray.screenRun = mirror::reliefScreenRun(glm::vec2(ray.direction.x, ray.direction.y),
+          alongX.TCoord - fragment.TCoord, alongY.TCoord - fragment.TCoord,
+          static_cast<float>(mapper->GetScreenTolerance()));
+      }
       const mirror::ReliefHit hit = search(ray, mapper->GetLinearSteps(), mapper->GetBinarySteps());
       const double distance = mirror::reliefFrameHitDistance(frame, pixel, ray, hit);
       const glm::vec3 viewVC = pixel.viewVC;

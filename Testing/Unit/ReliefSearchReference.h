@@ -318,6 +318,49 @@ void ExpectGrazingHits(const std::vector<Scene>& scenes, const char* method, Sea
     EXPECT_EQ(wrong, 0) << method << " on " << scene.Name << ", of 40 grazing rays";
   }
 }
+
+// Every scene with its cone map, made once per test suite: the fixture of the searches
+// that read cones (ConeStep, Automatic).
+class ReliefConeScenes : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    AllScenes = new std::vector<Scene>(Scenes());
+    ConeMaps = new std::vector<ConeStepMap>();
+    for (const Scene& scene : *AllScenes)
+    {
+      ConeMaps->push_back(ConeMapOf(scene.Field));
+    }
+  }
+  static void TearDownTestSuite()
+  {
+    delete AllScenes;
+    delete ConeMaps;
+    AllScenes = nullptr;
+    ConeMaps = nullptr;
+  }
+  static size_t Find(const std::string& name)
+  {
+    for (size_t k = 0; k < AllScenes->size(); ++k)
+    {
+      if ((*AllScenes)[k].Name == name)
+      {
+        return k;
+      }
+    }
+    ADD_FAILURE() << "no scene " << name;
+    return 0;
+  }
+  static void Use(size_t scene)
+  {
+    CurrentField = &(*AllScenes)[scene].Field;
+    CurrentPyramid = &(*AllScenes)[scene].Pyramid;
+    CurrentConeMap = &(*ConeMaps)[scene];
+  }
+  static inline std::vector<Scene>* AllScenes = nullptr;
+  static inline std::vector<ConeStepMap>* ConeMaps = nullptr;
+};
 }
 
 #endif

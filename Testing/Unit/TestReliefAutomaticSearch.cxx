@@ -13,36 +13,9 @@ namespace
 {
 using namespace ReliefCpuMirror;
 
-class ReliefAutomaticSearch : public ::testing::Test
+class ReliefAutomaticSearch : public ReliefConeScenes
 {
-protected:
-  static void SetUpTestSuite()
-  {
-    AllScenes = new std::vector<Scene>(Scenes());
-    ConeMaps = new std::vector<ConeStepMap>();
-    for (const Scene& scene : *AllScenes)
-    {
-      ConeMaps->push_back(ConeMapOf(scene.Field));
-    }
-  }
-  static void TearDownTestSuite()
-  {
-    delete AllScenes;
-    delete ConeMaps;
-    AllScenes = nullptr;
-    ConeMaps = nullptr;
-  }
-  static void Use(size_t scene)
-  {
-    CurrentField = &(*AllScenes)[scene].Field;
-    CurrentPyramid = &(*AllScenes)[scene].Pyramid;
-    CurrentConeMap = &(*ConeMaps)[scene];
-  }
-  static std::vector<Scene>* AllScenes;
-  static std::vector<ConeStepMap>* ConeMaps;
 };
-std::vector<Scene>* ReliefAutomaticSearch::AllScenes = nullptr;
-std::vector<ConeStepMap>* ReliefAutomaticSearch::ConeMaps = nullptr;
 
 // The ray with its run on screen: `tolerances` screen tolerances from t = 0 to 1.
 ReliefRay WithScreenRun(ReliefRay ray, float tolerances)

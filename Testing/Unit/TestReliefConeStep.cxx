@@ -269,48 +269,9 @@ ConeStepMap ClassicConeMap(const DepthField& field)
   return map;
 }
 
-class ReliefConeStep : public ::testing::Test
+class ReliefConeStep : public ReliefConeScenes
 {
-protected:
-  static void SetUpTestSuite()
-  {
-    AllScenes = new std::vector<Scene>(Scenes());
-    ConeMaps = new std::vector<ConeStepMap>();
-    for (const Scene& scene : *AllScenes)
-    {
-      ConeMaps->push_back(ConeMapOf(scene.Field));
-    }
-  }
-  static void TearDownTestSuite()
-  {
-    delete AllScenes;
-    delete ConeMaps;
-    AllScenes = nullptr;
-    ConeMaps = nullptr;
-  }
-  static size_t Find(const std::string& name)
-  {
-    for (size_t k = 0; k < AllScenes->size(); ++k)
-    {
-      if ((*AllScenes)[k].Name == name)
-      {
-        return k;
-      }
-    }
-    ADD_FAILURE() << "no scene " << name;
-    return 0;
-  }
-  static void Use(size_t scene)
-  {
-    CurrentField = &(*AllScenes)[scene].Field;
-    CurrentPyramid = &(*AllScenes)[scene].Pyramid;
-    CurrentConeMap = &(*ConeMaps)[scene];
-  }
-  static std::vector<Scene>* AllScenes;
-  static std::vector<ConeStepMap>* ConeMaps;
 };
-std::vector<Scene>* ReliefConeStep::AllScenes = nullptr;
-std::vector<ConeStepMap>* ReliefConeStep::ConeMaps = nullptr;
 }
 
 TEST_F(ReliefConeStep, MatchesTheReferenceEverywhere)
