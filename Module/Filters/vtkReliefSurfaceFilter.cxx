@@ -274,6 +274,7 @@ vtkSmartPointer<vtkPolyData> vtkReliefSurfaceFilter::ExtractTriangles(vtkPolyDat
     return nullptr;
   }
   this->ReportNonFiniteTextureCoordinates(triangles);
+  this->ReportTextureCoordinatesWithoutArea(triangles);
   return this->WithUsableNormals(triangles);
 }
 
@@ -443,6 +444,54 @@ void vtkReliefSurfaceFilter::ReportNonFiniteTextureCoordinates(vtkPolyData* mesh
                        "them are drawn without relief. Give every point finite texture "
                        "coordinates (vtkTextureMapToPlane, vtkTextureMapToCylinder or "
                        "vtkTextureMapToSphere map new ones).");
+  }
+}
+
+bool vtkReliefSurfaceFilter::MapsTextureArea(vtkDataArray* tcoords, const vtkIdType ids[3])
+{
+  double corner[3][2];
+  for (int k = 0; k < 3; ++k)
+  {
+    corner[k][0] = tcoords->GetComponent(ids[k], 0);
+    corner[k][1] = tcoords->GetComponent(ids[k], 1);
+  }
+  const double edge1[2] = { corner[1][0] - corner[0][0], corner[1][1] - corner[0][1] };
+  const double edge2[2] = { corner[2][0] - corner[0][0], corner[2][1] - corner[0][1] };
+  const double twiceArea = std::abs(edge1[0] * edge2[1] - edge1[1] * edge2[0]);
+  const double scale = std::max(edge1[0] * edge1[0] + edge1[1] * edge1[1],
+    edge2[0] * edge2[0] + edge2[1] * edge2[1]);
+  // the shader's test on the pixel's derivatives (vtkReliefFragmentImpl.glsl), on the corners
+  return twiceArea > 1e-6 * scale; // false for NaN too
+}
+
+void vtkReliefSurfaceFilter::ReportTextureCoordinatesWithoutArea(vtkPolyData* triangles)
+{
+  vtkDataArray* tcoords = triangles->GetPointData()->GetTCoords();
+  vtkCellArray* polys = triangles->GetPolys();
+  vtkIdType count = 0;
+  vtkIdType first = -1;
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  auto iterator = vtk::TakeSmartPointer(polys->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    iterator->GetCurrentCell(size, ids);
+    // corners that are not finite are ReportNonFiniteTextureCoordinates' to report
+    const bool finite = size == 3 && HasFiniteTextureCoordinates(tcoords, ids[0]) &&
+      HasFiniteTextureCoordinates(tcoords, ids[1]) && HasFiniteTextureCoordinates(tcoords, ids[2]);
+    if (finite && !MapsTextureArea(tcoords, ids))
+    {
+      first = count++ == 0 ? iterator->GetCurrentCellId() : first;
+    }
+  }
+  if (count > 0)
+  {
+    vtkWarningMacro(<< count << " of the mesh's " << polys->GetNumberOfCells()
+                    << " triangles (the first: triangle " << first
+                    << ") have texture coordinates without area (their points share one "
+                       "(u, v), or lie on a line): relief has no direction there, and they are "
+                       "drawn without it. Map texture coordinates over them "
+                       "(vtkTextureMapToPlane, vtkTextureMapToCylinder or vtkTextureMapToSphere).");
   }
 }
 

@@ -79,6 +79,10 @@ protected:
   /// One warning when some of the mesh's texture coordinates are not finite.
   void ReportNonFiniteTextureCoordinates(vtkPolyData* mesh);
 
+  /// One warning when some triangles' texture coordinates map no area: no relief there.
+  void ReportTextureCoordinatesWithoutArea(vtkPolyData* triangles);
+  static bool MapsTextureArea(vtkDataArray* tcoords, const vtkIdType ids[3]);
+
   /**
    * The mesh, its normals or tangents left out (with one warning) when they do not give
    * three numbers a point; one warning when some normals have no direction (zero, not

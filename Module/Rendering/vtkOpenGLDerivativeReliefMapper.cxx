@@ -87,6 +87,15 @@ std::string vtkOpenGLDerivativeReliefMapper::GetFrameDefines()
   return this->HasVertexNormals ? "#define RELIEF_VERTEX_NORMALS\n" : "";
 }
 
+void vtkOpenGLDerivativeReliefMapper::CopyReliefSettings(vtkOpenGLReliefMapper* source)
+{
+  this->Superclass::CopyReliefSettings(source);
+  if (auto* same = vtkOpenGLDerivativeReliefMapper::SafeDownCast(source))
+  {
+    this->SetComputeNormals(same->ComputeNormals);
+  }
+}
+
 void vtkOpenGLDerivativeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -48,6 +48,9 @@ public:
   vtkTypeMacro(vtkOpenGLDerivativeReliefMapper, vtkOpenGLReliefMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// vtkOpenGLReliefMapper's, and the ComputeNormals of a mapper of this frame.
+  void CopyReliefSettings(vtkOpenGLReliefMapper* source) override;
+
   /**
    * The mesh as last rendered: triangulated, with its texture coordinates and normals,
    * if any (computed ones with ComputeNormals); the triangulated mesh before a render.

@@ -210,6 +210,15 @@ const char* vtkOpenGLQuadricReliefMapper::GetDistanceModeAsString()
   return this->DistanceMode == EXACT ? "Exact" : "Approximate";
 }
 
+void vtkOpenGLQuadricReliefMapper::CopyReliefSettings(vtkOpenGLReliefMapper* source)
+{
+  this->Superclass::CopyReliefSettings(source);
+  if (auto* same = vtkOpenGLQuadricReliefMapper::SafeDownCast(source))
+  {
+    this->SetDistanceMode(same->DistanceMode);
+  }
+}
+
 void vtkOpenGLQuadricReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -69,6 +69,9 @@ public:
   vtkTypeMacro(vtkOpenGLQuadricReliefMapper, vtkOpenGLReliefMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// vtkOpenGLReliefMapper's, and the DistanceMode of a mapper of this frame.
+  void CopyReliefSettings(vtkOpenGLReliefMapper* source) override;
+
   /// The filter that computes the quadrics when the input has none, to configure it.
   vtkLocalQuadricFilter* GetLocalQuadricFilter();
 

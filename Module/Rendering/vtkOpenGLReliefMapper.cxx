@@ -319,6 +319,49 @@ vtkMTimeType vtkOpenGLReliefMapper::GetMTime()
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLReliefMapper::ShallowCopy(vtkAbstractMapper* mapper)
+{
+  this->Superclass::ShallowCopy(mapper);
+  if (auto* relief = vtkOpenGLReliefMapper::SafeDownCast(mapper))
+  {
+    this->CopyReliefSettings(relief);
+  }
+}
+
+void vtkOpenGLReliefMapper::CopyReliefSettings(vtkOpenGLReliefMapper* source)
+{
+  if (!source || source == this)
+  {
+    return;
+  }
+  this->SetSearchMethod(source->SearchMethod);
+  this->SetScreenTolerance(source->ScreenTolerance);
+  this->SetLinearSteps(source->LinearSteps);
+  this->SetBinarySteps(source->BinarySteps);
+  this->SetSafetyRadiusTolerance(source->SafetyRadiusTolerance);
+  this->SetDepthScale(source->DepthScale);
+  this->SetSelfShadowing(source->SelfShadowing);
+  this->SetFootprintShading(source->FootprintShading);
+  this->SetDepthCorrection(source->DepthCorrection);
+  this->SetTwoSidedRelief(source->TwoSidedRelief);
+  this->SetDisplayMode(source->DisplayMode);
+  for (int port = 1; port <= 2; ++port)
+  {
+    vtkAlgorithmOutput* output =
+      source->GetNumberOfInputConnections(port) ? source->GetInputConnection(port, 0) : nullptr;
+    if (output != (this->GetNumberOfInputConnections(port) ? this->GetInputConnection(port, 0)
+                                                           : nullptr))
+    {
+      this->SetInputConnection(port, output);
+    }
+  }
+  vtkReliefTextureFilter* from = source->ReliefTextureFilter;
+  this->ReliefTextureFilter->SetInputConvention(from->GetInputConvention());
+  this->ReliefTextureFilter->SetComponent(from->GetComponent());
+  this->ReliefTextureFilter->SetDepthToTexelRatio(from->GetDepthToTexelRatio());
+  this->ReliefTextureFilter->SetUseInputNormals(from->GetUseInputNormals());
+}
+
 void vtkOpenGLReliefMapper::SetHeightMapConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
@@ -404,7 +447,8 @@ bool vtkOpenGLReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     {
       this->WarnedMissingHeightMap = true;
       vtkWarningMacro("No height map: the mesh is drawn without relief. Give one with "
-                      "SetHeightMapConnection() or SetHeightMapData().");
+                      "SetHeightMapConnection() or SetHeightMapData() (in ParaView: the "
+                      "Relief Surface's Height Map).");
     }
     return false;
   }

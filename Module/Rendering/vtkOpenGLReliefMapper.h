@@ -303,6 +303,21 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   /**
+   * vtkPolyDataMapper's copy (input included) and, from a relief mapper, its relief
+   * settings: the search and its options, depth, shading, display mode, the height map's
+   * and acceleration image's connections and the relief texture filter's settings, and
+   * those of the frame where both mappers have it (vtkCompositeReliefMapper copies them
+   * into the mapper of each block).
+   */
+  void ShallowCopy(vtkAbstractMapper* mapper) override;
+
+  /**
+   * The relief settings of ShallowCopy() alone, leaving the input and VTK's mapper
+   * settings as they are. Each setter modifies this mapper only where a value changes.
+   */
+  virtual void CopyReliefSettings(vtkOpenGLReliefMapper* source);
+
+  /**
    * The modification time, as for any VTK object; to the checks of
    * vtkOpenGLPolyDataMapper that rebuild shaders and buffers on any change, the time of
    * the last change that was not one of the relief's options (ModifiedShaderOptions).

@@ -111,6 +111,11 @@ int vtkReliefShaderRewrites::LightThrough(
   const std::string weight = std::string(" * ") + visibility;
   int lights = RewriteEach(fragment, "float df = max(0.0,normalVCVSOutput.z);", "", nullptr,
     [&lit](const std::string&) { return "float df = " + lit + "(vec3(0.0, 0.0, 1.0));"; });
+  // VTK 9.2 (ParaView 5.11) floors the headlight's cosine, so that pow(df, 0) stays 1
+  lights += RewriteEach(fragment, "float df = max(0.000001, normalVCVSOutput.z);", "", nullptr,
+    [&lit](const std::string&) {
+      return "float df = max(0.000001, " + lit + "(vec3(0.0, 0.0, 1.0)));";
+    });
   lights += RewriteEach(fragment, "df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC",
     "));", IsDigit, [&](const std::string& light) {
       return "df = " + lit + "(-lightDirectionVC" + light + ")" + weight + "(-lightDirectionVC" +

@@ -328,16 +328,15 @@ void MeshWithoutNormals()
 // Texture coordinates that hold no mapping on the left half: constant, collinear, or
 // triangles without area. Valid meshes have such triangles (poles, collapsed UV islands):
 // nothing to report, sane pixels, relief on the right half.
+// Texture coordinates that map no area: no direction for the relief, and rays that would
+// run without end (assimp's spider.obj: 1292 of 1368 triangles, 20 s a frame). Shaded
+// plainly, with one warning.
 void CheckDegenerateLeftHalf(vtkPolyData* grid, const std::string& what)
 {
   const Census census = Render(grid, NewMapper());
-  CheckSilent(census, what);
+  CheckOneWarning(census, "texture coordinates without area", what);
   Check(census.Relief > HalfCovered, what + ": the right half keeps its relief");
-  if (MapperName == "Derivative")
-  {
-    // the derivative frame sees that the triangle holds no texture mapping
-    Check(census.NoSearch > HalfCovered, what + ": the left half is shaded plainly");
-  }
+  Check(census.NoSearch > HalfCovered, what + ": the left half is shaded plainly");
   CheckSane(census, what);
 }
 

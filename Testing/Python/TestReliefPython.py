@@ -15,6 +15,7 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_FLOAT, VTK_STRING, VTK_UNSIGNED_SHORT
 from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkFiltersTexture import vtkTextureMapToSphere
 from vtkmodules.vtkIOImage import vtkPNGWriter
@@ -25,7 +26,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
                                          vtkWindowToImageFilter)
 
 import vtkrelief
-from vtkrelief import (vtkConeStepMapFilter, vtkLocalQuadricFilter, vtkMaximumMipmapFilter,
+from vtkrelief import (vtkCompositeReliefMapper, vtkConeStepMapFilter, vtkLocalQuadricFilter,
+                       vtkMaximumMipmapFilter,
                        vtkOpenGLDerivativeReliefMapper, vtkOpenGLQuadricReliefMapper,
                        vtkOpenGLReliefMapper, vtkReliefSurfaceFilter,
                        vtkOpenImageIOReader, vtkReliefDisplacementFilter,
@@ -63,7 +65,8 @@ class TestReliefPython(unittest.TestCase):
                     vtkReliefTangentFrameFilter, vtkMaximumMipmapFilter,
                     vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkReliefDisplacementFilter,
                     vtkLocalQuadricFilter, vtkOpenGLQuadricReliefMapper,
-                    vtkOpenGLDerivativeReliefMapper, vtkReliefSurfaceFilter):
+                    vtkOpenGLDerivativeReliefMapper, vtkReliefSurfaceFilter,
+                    vtkCompositeReliefMapper):
             self.assertIs(getattr(vtkrelief, cls.__name__), cls)
             self.assertEqual(cls().GetClassName(), cls.__name__)
 
@@ -401,6 +404,49 @@ class TestDerivativeRender(unittest.TestCase):
         self.assertGreater(numpy.abs(flat - smooth)[covered(flat)].mean(), 2.0)
         mapper.ComputeNormalsOff()
         self.assertTrue((pixels() == flat).all(), "off again: the flat frame again")
+
+
+class TestCompositeRender(unittest.TestCase):
+    """A multiblock pipeline drawn with relief: one relief mapper per block, set up once."""
+
+    def test_each_block_is_drawn_with_the_prototype_settings(self):
+        blocks = vtkMultiBlockDataSet()
+        for index, x in enumerate((-0.55, 0.55)):
+            plane = vtkPlaneSource()
+            plane.SetCenter(x, 0.0, 0.0)
+            plane.Update()
+            blocks.SetBlock(index, plane.GetOutput())
+        mapper = vtkCompositeReliefMapper()
+        mapper.SetInputDataObject(blocks)
+        mapper.GetReliefMapper().SetHeightMapData(read_image("stones_height.png"))
+        mapper.GetReliefMapper().SetDepthScale(0.05)
+        warnings = MessageRecorder(mapper, vtkCommand.WarningEvent)
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        renderer = vtkRenderer()
+        renderer.AddActor(actor)
+        renderer.GetActiveCamera().Elevation(-40)
+        renderer.ResetCamera()
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetSize(200, 120)
+        window.AddRenderer(renderer)
+        self.addCleanup(window.Finalize)
+
+        def pixels():
+            window.Render()
+            grab = vtkWindowToImageFilter()
+            grab.SetInput(window)
+            grab.Update()
+            return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+
+        relief = pixels()
+        self.assertEqual(mapper.GetNumberOfBlockMappers(), 2)
+        self.assertEqual(warnings.messages, [])
+        mapper.GetReliefMapper().SetDepthScale(0.0)
+        flat = pixels()
+        self.assertEqual(mapper.GetBlockMapper(1).GetDepthScale(), 0.0)
+        self.assertGreater((abs(relief - flat).max(axis=1) > 16).mean(), 0.05)
 
 
 if __name__ == "__main__":

@@ -21,7 +21,13 @@
   reliefFragment.depthScale = reliefDepthScale;
   reliefFragment.eyeDistance = cameraParallel == 1 ? 1e30 : length(reliefPositionVSOutput);
   ReliefFrame reliefFrame = reliefFrameOf(reliefFragment);
-  bool reliefFrameUsable = reliefEntryUsable && reliefFrame.usable;
+  // texture coordinates that map no area here (the triangle's points share one (u, v) or
+  // lie on a line) give the relief no direction, and its rays would run without end: the
+  // fragment is shaded plainly (vtkReliefSurfaceFilter warns, with the same test)
+  float reliefTCoordArea = abs(reliefGradX.x * reliefGradY.y - reliefGradX.y * reliefGradY.x);
+  bool reliefMapsArea = reliefTCoordArea >
+    1e-6 * max(dot(reliefGradX, reliefGradX), dot(reliefGradY, reliefGradY));
+  bool reliefFrameUsable = reliefEntryUsable && reliefMapsArea && reliefFrame.usable;
   reliefAxisU = reliefFrame.axisU;
   reliefAxisV = reliefFrame.axisV;
   reliefFrameN = reliefFrame.normal;

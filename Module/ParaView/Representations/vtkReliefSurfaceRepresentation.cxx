@@ -1,0 +1,111 @@
+#include "vtkReliefSurfaceRepresentation.h"
+
+#include "vtkAlgorithmOutput.h"
+#include "vtkCompositeReliefMapper.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLDerivativeReliefMapper.h"
+#include "vtkOpenGLQuadricReliefMapper.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkReliefTextureFilter.h"
+#include "vtkTexture.h"
+
+vtkStandardNewMacro(vtkReliefSurfaceRepresentation);
+
+vtkReliefSurfaceRepresentation::vtkReliefSurfaceRepresentation()
+{
+  // Surface's mapper replaced; its level-of-detail mapper (decimated, plain) kept
+  this->Mapper->Delete();
+  this->Mapper = vtkCompositeReliefMapper::New();
+  this->SetupDefaults();
+}
+
+vtkReliefSurfaceRepresentation::~vtkReliefSurfaceRepresentation() = default;
+
+vtkCompositeReliefMapper* vtkReliefSurfaceRepresentation::GetReliefMapper()
+{
+  return static_cast<vtkCompositeReliefMapper*>(this->Mapper);
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefFrame(int frame)
+{
+  if (frame < TANGENT || frame > DERIVATIVE)
+  {
+    vtkErrorMacro("Unknown relief frame " << frame
+                                          << "; use 0 (tangent), 1 (quadric) or 2 (derivative).");
+    return;
+  }
+  if (frame == this->ReliefFrame)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkOpenGLReliefMapper> mapper;
+  switch (frame)
+  {
+    case QUADRIC:
+      mapper = vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New();
+      break;
+    case DERIVATIVE:
+      mapper = vtkSmartPointer<vtkOpenGLDerivativeReliefMapper>::New();
+      break;
+    default:
+      mapper = vtkSmartPointer<vtkOpenGLReliefMapper>::New();
+  }
+  mapper->CopyReliefSettings(this->GetReliefMapper()->GetReliefMapper());
+  this->GetReliefMapper()->SetReliefMapper(mapper);
+  this->ReliefFrame = frame;
+  this->Modified();
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefHeightMap(vtkTexture* texture)
+{
+  if (texture != this->HeightMap)
+  {
+    this->HeightMap = texture;
+    vtkAlgorithmOutput* heights = texture && texture->GetNumberOfInputConnections(0)
+      ? texture->GetInputConnection(0, 0)
+      : nullptr;
+    this->GetReliefMapper()->GetReliefMapper()->SetHeightMapConnection(heights);
+    this->Modified();
+  }
+}
+
+vtkTexture* vtkReliefSurfaceRepresentation::GetReliefHeightMap()
+{
+  return this->HeightMap;
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefDepthScale(double depth)
+{
+  this->GetReliefMapper()->GetReliefMapper()->SetDepthScale(depth);
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefSearchMethod(int method)
+{
+  this->GetReliefMapper()->GetReliefMapper()->SetSearchMethod(method);
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefScreenTolerance(double pixels)
+{
+  this->GetReliefMapper()->GetReliefMapper()->SetScreenTolerance(pixels);
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefSelfShadowing(bool enabled)
+{
+  this->GetReliefMapper()->GetReliefMapper()->SetSelfShadowing(enabled);
+}
+
+void vtkReliefSurfaceRepresentation::SetReliefHeightConvention(int convention)
+{
+  vtkOpenGLReliefMapper* prototype = this->GetReliefMapper()->GetReliefMapper();
+  prototype->GetReliefTextureFilter()->SetInputConvention(convention);
+  prototype->Modified(); // the block mappers copy the filter's settings when it changes
+}
+
+void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ReliefFrame: " << this->ReliefFrame << "\n";
+  os << indent << "ReliefHeightMap: " << this->HeightMap.Get() << "\n";
+  os << indent << "ReliefMapper:\n";
+  this->GetReliefMapper()->PrintSelf(os, indent.GetNextIndent());
+}
