@@ -8,13 +8,17 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
-#include <regex>
+#include <algorithm>
+#include <cstring>
+#include <string>
 
 vtkStandardNewMacro(vtkCompositeReliefMapper);
 
 vtkCompositeReliefMapper::vtkCompositeReliefMapper()
   : ReliefMapper(vtkSmartPointer<vtkOpenGLReliefMapper>::New())
 {
+  this->BlockMessages->SetClientData(this);
+  this->BlockMessages->SetCallback(&vtkCompositeReliefMapper::OnBlockMessage);
 }
 
 vtkCompositeReliefMapper::~vtkCompositeReliefMapper()
@@ -22,9 +26,18 @@ vtkCompositeReliefMapper::~vtkCompositeReliefMapper()
   // the superclass holds the current block mappers a little longer
   for (auto& mapper : this->BlockMappers)
   {
-    mapper->RemoveObservers(vtkCommand::WarningEvent);
-    mapper->RemoveObservers(vtkCommand::ErrorEvent);
+    this->StopObserving(mapper);
   }
+}
+
+void vtkCompositeReliefMapper::StopObserving(vtkOpenGLReliefMapper* mapper)
+{
+  mapper->RemoveObserver(this->BlockMessages); // observers others added stay
+}
+
+vtkMTimeType vtkCompositeReliefMapper::GetMTime()
+{
+  return this->vtkAbstractMapper::GetMTime();
 }
 
 void vtkCompositeReliefMapper::SetReliefMapper(vtkOpenGLReliefMapper* mapper)
@@ -64,25 +77,32 @@ vtkPolyDataMapper* vtkCompositeReliefMapper::MakeAMapper()
   vtkOpenGLReliefMapper* mapper = this->ReliefMapper->NewInstance();
   mapper->vtkMapper::ShallowCopy(this);
   mapper->CopyReliefSettings(this->ReliefMapper);
-  mapper->AddObserver(vtkCommand::WarningEvent, this, &vtkCompositeReliefMapper::OnBlockMessage);
-  mapper->AddObserver(vtkCommand::ErrorEvent, this, &vtkCompositeReliefMapper::OnBlockMessage);
+  mapper->AddObserver(vtkCommand::WarningEvent, this->BlockMessages);
+  mapper->AddObserver(vtkCommand::ErrorEvent, this->BlockMessages);
   this->BlockMappers.emplace_back(mapper);
   // the superclass registers it, then gives up the reference New() made
   return mapper;
 }
 
-void vtkCompositeReliefMapper::OnBlockMessage(vtkObject*, unsigned long event, void* message)
+void vtkCompositeReliefMapper::OnBlockMessage(
+  vtkObject*, unsigned long event, void* client, void* message)
 {
+  auto* self = static_cast<vtkCompositeReliefMapper*>(client);
   const char* text = static_cast<const char*>(message);
-  // blocks' mappers say the same thing but for their address
-  static const std::regex address(R"(\(0x[0-9a-fA-F]+\))");
-  if (!text || !this->ReportedMessages.insert(std::regex_replace(text, address, "")).second)
+  if (!text)
   {
     return;
   }
-  if (this->HasObserver(event))
+  // the first line says where in the code ("Warning: In file, line n"): blocks' messages
+  // from one place differ only by their numbers and the mapper's address
+  const std::string where(text, std::find(text, text + std::strlen(text), '\n'));
+  if (!self->ReportedMessages.insert(where).second)
   {
-    this->InvokeEvent(event, message);
+    return;
+  }
+  if (self->HasObserver(event))
+  {
+    self->InvokeEvent(event, message);
   }
   else if (event == vtkCommand::ErrorEvent)
   {
@@ -96,7 +116,7 @@ void vtkCompositeReliefMapper::OnBlockMessage(vtkObject*, unsigned long event, v
 
 void vtkCompositeReliefMapper::CopySettingsToBlocks()
 {
-  if (this->ReliefMapper->GetMTime() <= this->SettingsCopyTime.GetMTime())
+  if (this->ReliefMapper->GetReliefSettingsMTime() <= this->SettingsCopyTime.GetMTime())
   {
     return;
   }
@@ -114,8 +134,7 @@ void vtkCompositeReliefMapper::KeepBlockMappersItReplaces()
   {
     for (auto& mapper : this->BlockMappers)
     {
-      mapper->RemoveObservers(vtkCommand::WarningEvent);
-      mapper->RemoveObservers(vtkCommand::ErrorEvent);
+      this->StopObserving(mapper);
       this->ReplacedBlockMappers.push_back(mapper);
     }
     this->BlockMappers.clear();

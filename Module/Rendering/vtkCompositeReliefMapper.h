@@ -15,12 +15,15 @@
  * This is the mapper ParaView's "Relief Surface" representation draws with, since
  * ParaView hands its mappers multiblock datasets; in VTK it draws the output of
  * multiblock pipelines. The block mappers' warnings and errors are this mapper's, each
- * distinct message reported once per set of block mappers rather than once per block.
+ * reported once per set of block mappers rather than once per block (messages from one
+ * line of the code count as one, whatever numbers they hold).
  */
 #ifndef vtkCompositeReliefMapper_h
 #define vtkCompositeReliefMapper_h
 
+#include "vtkCallbackCommand.h" // For BlockMessages
 #include "vtkCompositePolyDataMapper.h"
+#include "vtkNew.h" // For BlockMessages
 #include "vtkReliefRenderingModule.h" // For export macro
 #include "vtkSmartPointer.h"          // For ReliefMapper
 
@@ -48,7 +51,7 @@ public:
   ///@}
 
   ///@{
-  /// The block mappers of the last render, in the order of the input's blocks.
+  /// The block mappers of the last render, in the order of the input's polygonal blocks.
   int GetNumberOfBlockMappers();
   vtkOpenGLReliefMapper* GetBlockMapper(int index);
   ///@}
@@ -57,6 +60,13 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
   bool HasOpaqueGeometry() override;
   bool HasTranslucentPolygonalGeometry() override;
+
+  /**
+   * The superclass remakes every block mapper when this time passes their making: it
+   * leaves out the lookup table's, which each render passes to the blocks, so that a
+   * colour map's edit does not remake them (their frames, buffers and shaders).
+   */
+  vtkMTimeType GetMTime() override;
 
 protected:
   vtkCompositeReliefMapper();
@@ -76,12 +86,14 @@ protected:
   void KeepBlockMappersItReplaces();
   void ReleaseReplacedBlockMappers(vtkWindow* window);
 
-  /// A block mapper's message, passed on unless one like it was passed on already.
-  void OnBlockMessage(vtkObject* caller, unsigned long event, void* message);
+  /// A block mapper's message, passed on unless one from the same line of code was.
+  static void OnBlockMessage(vtkObject* caller, unsigned long event, void* self, void* message);
+  void StopObserving(vtkOpenGLReliefMapper* mapper);
 
   vtkSmartPointer<vtkOpenGLReliefMapper> ReliefMapper;
   std::vector<vtkSmartPointer<vtkOpenGLReliefMapper>> BlockMappers; // as the superclass's
   std::vector<vtkSmartPointer<vtkOpenGLReliefMapper>> ReplacedBlockMappers;
+  vtkNew<vtkCallbackCommand> BlockMessages; // observes every block mapper
   vtkTimeStamp SettingsCopyTime;
   std::set<std::string> ReportedMessages; // since the block mappers were last made
 

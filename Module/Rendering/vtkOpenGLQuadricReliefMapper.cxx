@@ -20,6 +20,8 @@
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkOpenGLQuadricReliefMapper);
 
 namespace
@@ -216,7 +218,13 @@ void vtkOpenGLQuadricReliefMapper::CopyReliefSettings(vtkOpenGLReliefMapper* sou
   if (auto* same = vtkOpenGLQuadricReliefMapper::SafeDownCast(source))
   {
     this->SetDistanceMode(same->DistanceMode);
+    this->QuadricFilter->SetNeighbourhoodRings(same->QuadricFilter->GetNeighbourhoodRings());
   }
+}
+
+vtkMTimeType vtkOpenGLQuadricReliefMapper::GetReliefSettingsMTime()
+{
+  return std::max(this->Superclass::GetReliefSettingsMTime(), this->QuadricFilter->GetMTime());
 }
 
 void vtkOpenGLQuadricReliefMapper::PrintSelf(ostream& os, vtkIndent indent)

@@ -69,8 +69,12 @@ public:
   vtkTypeMacro(vtkOpenGLQuadricReliefMapper, vtkOpenGLReliefMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// vtkOpenGLReliefMapper's, and the DistanceMode of a mapper of this frame.
+  ///@{
+  /// vtkOpenGLReliefMapper's, and the DistanceMode and quadric filter's neighbourhood of
+  /// a mapper of this frame.
   void CopyReliefSettings(vtkOpenGLReliefMapper* source) override;
+  vtkMTimeType GetReliefSettingsMTime() override;
+  ///@}
 
   /// The filter that computes the quadrics when the input has none, to configure it.
   vtkLocalQuadricFilter* GetLocalQuadricFilter();

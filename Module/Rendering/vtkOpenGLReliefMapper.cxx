@@ -362,6 +362,11 @@ void vtkOpenGLReliefMapper::CopyReliefSettings(vtkOpenGLReliefMapper* source)
   this->ReliefTextureFilter->SetUseInputNormals(from->GetUseInputNormals());
 }
 
+vtkMTimeType vtkOpenGLReliefMapper::GetReliefSettingsMTime()
+{
+  return std::max(this->GetMTime(), this->ReliefTextureFilter->GetMTime());
+}
+
 void vtkOpenGLReliefMapper::SetHeightMapConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);

@@ -306,8 +306,7 @@ public:
    * vtkPolyDataMapper's copy (input included) and, from a relief mapper, its relief
    * settings: the search and its options, depth, shading, display mode, the height map's
    * and acceleration image's connections and the relief texture filter's settings, and
-   * those of the frame where both mappers have it (vtkCompositeReliefMapper copies them
-   * into the mapper of each block).
+   * those of the frame where both mappers have it.
    */
   void ShallowCopy(vtkAbstractMapper* mapper) override;
 
@@ -316,6 +315,10 @@ public:
    * settings as they are. Each setter modifies this mapper only where a value changes.
    */
   virtual void CopyReliefSettings(vtkOpenGLReliefMapper* source);
+
+  /// The last change of what CopyReliefSettings() copies: this mapper's settings and its
+  /// relief texture filter's (and the frame's filters', in subclasses).
+  virtual vtkMTimeType GetReliefSettingsMTime();
 
   /**
    * The modification time, as for any VTK object; to the checks of

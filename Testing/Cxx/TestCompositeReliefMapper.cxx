@@ -1,8 +1,9 @@
 // vtkCompositeReliefMapper draws each polygonal block of a multiblock dataset with a relief
 // mapper made like its prototype: two blocks draw exactly what two actors of relief
-// mappers draw, share one relief texture, follow the prototype's settings without new
-// block mappers (and its frame with new ones), report a block's warning once for all
-// blocks, and release the GL objects of the block mappers a new input replaces.
+// mappers draw, share one relief texture, follow the prototype's settings (its relief
+// texture filter's too) without new block mappers, and a colour map's edit keeps them,
+// take its frame with new ones, report a block's warning once for all blocks, and
+// release the GL objects of the block mappers a new input replaces.
 // No baseline image: renders are compared.
 #include "ReliefEventRecorder.h"
 #include "ReliefLiveGLObjects.h"
@@ -12,6 +13,7 @@
 #include "vtkCamera.h"
 #include "vtkCompositeReliefMapper.h"
 #include "vtkImageData.h"
+#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
@@ -20,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
+#include "vtkReliefTextureFilter.h"
 #include "vtkRenderer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -105,6 +108,8 @@ int TestCompositeReliefMapper(int, char*[])
   composite->AddObserver(vtkCommand::WarningEvent, messages);
   composite->AddObserver(vtkCommand::ErrorEvent, messages);
   composite->SetInputDataObject(TwoSquares());
+  vtkNew<vtkLookupTable> colours; // as ParaView gives one, then edits it
+  composite->SetLookupTable(colours);
   composite->GetReliefMapper()->SetHeightMapData(heights);
   composite->GetReliefMapper()->SetDepthScale(0.08);
   auto actor = ReliefScene::ReliefActor(composite, "");
@@ -125,6 +130,14 @@ int TestCompositeReliefMapper(int, char*[])
   check(first->GetDepthScale() == 0.0, "and reaches them");
   check(ReliefScene::Pixels(window) != reference, "and changes the picture");
   composite->GetReliefMapper()->SetDepthScale(0.08);
+  composite->GetReliefMapper()->GetReliefTextureFilter()->SetInputConventionToDepth();
+  window->Render();
+  check(first->GetReliefTextureFilter()->GetInputConvention() == vtkReliefTextureFilter::DEPTH,
+    "the relief texture filter's settings reach the blocks");
+  composite->GetReliefMapper()->GetReliefTextureFilter()->SetInputConventionToHeight();
+  colours->SetHueRange(0.2, 0.8);
+  window->Render();
+  check(composite->GetBlockMapper(0) == first, "a colour map's edit keeps the block mappers");
   composite->GetReliefMapper()->SetSearchMethodToExactDDA();
   window->Render();
   check(first->GetSearchMethod() == vtkOpenGLReliefMapper::EXACT_DDA, "the search method too");

@@ -325,12 +325,10 @@ void MeshWithoutNormals()
   CheckSane(census, "no normals");
 }
 
-// Texture coordinates that hold no mapping on the left half: constant, collinear, or
-// triangles without area. Valid meshes have such triangles (poles, collapsed UV islands):
-// nothing to report, sane pixels, relief on the right half.
-// Texture coordinates that map no area: no direction for the relief, and rays that would
-// run without end (assimp's spider.obj: 1292 of 1368 triangles, 20 s a frame). Shaded
-// plainly, with one warning.
+// Texture coordinates that map no area on the left half (constant or collinear): no
+// direction for the relief there, and rays that would run without end (assimp's
+// spider.obj: 1292 of its 1368 triangles, 19 s a frame). Shaded plainly, with one
+// warning; relief on the right half.
 void CheckDegenerateLeftHalf(vtkPolyData* grid, const std::string& what)
 {
   const Census census = Render(grid, NewMapper());

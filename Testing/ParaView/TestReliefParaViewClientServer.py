@@ -1,7 +1,8 @@
 """Client and server: pvserver on 2 MPI ranks at 127.0.0.1, pvpython connected to it, the
-plugin loaded on both sides; the server renders the brick wall, its cells split between
-its ranks, and the client saves the screenshot. It must match the committed baseline
-(the same scene in one process), as the pvbatch test's images do.
+plugin loaded on both sides; the server's ranks render the brick wall, its cells split
+between them (remote rendering forced: ParaView would draw data this small on the client),
+IceT composites their images, and the client saves the screenshot. It must match the
+committed baseline (the same scene in one process), as the pvbatch test's images do.
 
   python3 TestReliefParaViewClientServer.py PLUGIN DATA BASELINE OUTPUT_DIR
 """
@@ -17,15 +18,21 @@ import relief_paraview_images as images  # noqa: E402
 
 plugin, data, baseline, output = sys.argv[1:5]
 render = os.path.join(os.path.dirname(os.path.abspath(__file__)), "relief_paraview_render.py")
-mpiexec = ["mpiexec"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+# the programs CMake found (Testing/ParaView/CMakeLists.txt), else those on PATH;
+# --oversubscribe: 2 ranks even on a machine of fewer cores
+mpiexec = [os.environ.get("RELIEF_MPIEXEC", "mpiexec"), "--oversubscribe"] + \
+    (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+pvserver = os.environ.get("RELIEF_PVSERVER", "pvserver")
+pvpython = os.environ.get("RELIEF_PVPYTHON", "pvpython")
 image = os.path.join(output, "TestReliefParaViewClientServer.png")
 
 with socket.socket() as probe:  # a port nobody listens on
     probe.bind(("127.0.0.1", 0))
     port = probe.getsockname()[1]
-server = subprocess.Popen(mpiexec + ["-n", "2", "pvserver", "--force-offscreen-rendering",
+server = subprocess.Popen(mpiexec + ["-n", "2", pvserver, "--force-offscreen-rendering",
                                      "--hostname=127.0.0.1", "--server-port=%d" % port],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          errors="replace")
 listening = threading.Event()
 
 
@@ -40,9 +47,12 @@ def relay():
 threading.Thread(target=relay, daemon=True).start()
 failures = []
 try:
-    if not listening.wait(timeout=120):
-        raise RuntimeError("pvserver did not listen within 2 minutes")
-    subprocess.run(["pvpython", "--force-offscreen-rendering", render, "--plugin", plugin,
+    for _ in range(120):
+        if listening.wait(timeout=1) or server.poll() is not None:
+            break
+    if not listening.is_set():
+        raise RuntimeError("pvserver exited or did not listen within 2 minutes (port %d)" % port)
+    subprocess.run([pvpython, "--force-offscreen-rendering", render, "--plugin", plugin,
                     "--data", data, "--output", image, "--redistribute", "--server", str(port)],
                    check=True, timeout=300)
     with open(os.path.splitext(image)[0] + ".json") as report:

@@ -20,13 +20,17 @@ import relief_paraview_images as images  # noqa: E402
 
 plugin, data, baseline, output = sys.argv[1:5]
 render = os.path.join(os.path.dirname(os.path.abspath(__file__)), "relief_paraview_render.py")
-mpiexec = ["mpiexec"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+# the programs CMake found (Testing/ParaView/CMakeLists.txt), else those on PATH;
+# --oversubscribe: 2 ranks even on a machine of fewer cores
+mpiexec = [os.environ.get("RELIEF_MPIEXEC", "mpiexec"), "--oversubscribe"] + \
+    (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+pvbatch = os.environ.get("RELIEF_PVBATCH", "pvbatch")
 failures = []
 
 
 def run(ranks):
     image = os.path.join(output, "TestReliefParaViewParallel%d.png" % ranks)
-    subprocess.run(mpiexec + ["-n", str(ranks), "pvbatch", "--force-offscreen-rendering",
+    subprocess.run(mpiexec + ["-n", str(ranks), pvbatch, "--force-offscreen-rendering",
                               render, "--plugin", plugin, "--data", data, "--output", image,
                               "--redistribute"], check=True, timeout=300)
     with open(os.path.splitext(image)[0] + ".json") as report:

@@ -5,7 +5,8 @@
   largest extent;
 - without a height map: the plain surface, and one warning in ParaView's output window
   that names the property to set;
-- with the bricks' maps: the committed baseline, drawn by no plain Surface;
+- with the bricks' maps: the committed baseline, drawn by no plain Surface, and a
+  selection in the view passes (ParaView names its id arrays on every representation);
 - a height map from a pipeline's image source (a Texture proxy fed by Wavelet);
 - the other frames and an exact search draw the relief too, without messages.
 
@@ -19,8 +20,8 @@ import relief_paraview_images as images  # noqa: E402
 import relief_paraview_scene as scene  # noqa: E402
 
 from paraview import servermanager  # noqa: E402
-from paraview.simple import (CleantoGrid, Hide, Render, SaveScreenshot, Show,  # noqa: E402
-                             Wavelet)
+from paraview.simple import (CleantoGrid, ClearSelection, Hide, Render,  # noqa: E402
+                             SaveScreenshot, SelectSurfaceCells, Show, Wavelet)
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkOutputWindow  # noqa: E402
 from vtkmodules.util.misc import calldata_type  # noqa: E402
 
@@ -58,6 +59,12 @@ share = images.differing_pixels(relief, images.load_png(baseline), 8)
 print("against the baseline: %.4f%% differ by more than 8" % (100 * share))
 check(share <= 0.001, "the wall matches the baseline (%.3f%% differ)" % (100 * share))
 
+# a selection: ParaView's view tells every representation its id arrays around it
+SelectSurfaceCells(Rectangle=[100, 100, 300, 250], View=view)
+ClearSelection()
+Render(view)
+check(not messages, "a selection passes without messages: %s" % messages)
+
 display.Representation = "Surface"
 Render(view)
 plain = screenshot(view, "TestReliefParaViewPythonSurface")
@@ -66,8 +73,9 @@ check(images.differing_pixels(relief, plain, 8) > 0.05, "relief is not the textu
 # the types offered, and the defaults, on polygonal and unstructured data
 for data_source in (scene.tiled_plane(), CleantoGrid(Input=scene.tiled_plane())):
     shown = Show(data_source, view)
+    kind = data_source.GetDataInformation().GetDataSetTypeAsString()
     check("Relief Surface" in shown.GetProperty("Representation").Available,
-          "Relief Surface is offered for %s" % data_source.GetDataInformation().GetDataSetTypeAsString())
+          "Relief Surface is offered for %s" % kind)
     shown.Representation = "Relief Surface"
     check(abs(shown.ReliefDepthScale - 0.02) < 1e-9,
           "the default depth is 2%% of the extent (%g)" % shown.ReliefDepthScale)

@@ -22,7 +22,12 @@ from vtkmodules.vtkIOImage import vtkPNGWriter
 plugin, data, output = sys.argv[1:4]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "Examples", "ParaView", "relief_bricks.py")
-mpiexec = ["mpiexec"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+# the programs CMake found (Testing/ParaView/CMakeLists.txt), else those on PATH;
+# --oversubscribe: 2 ranks even on a machine of fewer cores
+mpiexec = [os.environ.get("RELIEF_MPIEXEC", "mpiexec"), "--oversubscribe"] + \
+    (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+pvbatch = os.environ.get("RELIEF_PVBATCH", "pvbatch")
+paraview = os.environ.get("RELIEF_PARAVIEW", "paraview")
 os.makedirs(output, exist_ok=True)
 
 
@@ -61,7 +66,8 @@ def gui(path):
     with tempfile.TemporaryDirectory() as settings:
         # a fresh user: no saved layout, no welcome dialog
         environment["HOME"] = settings
-        client = subprocess.Popen(["paraview", "--script=" + example], env=environment)
+        client = subprocess.Popen([paraview,
+                                   "--script=" + example], env=environment)
         try:
             previous, still = None, 0
             for _ in range(90):
@@ -77,12 +83,15 @@ def gui(path):
             write_png(previous[rows[0]:rows[-1] + 1, columns[0]:columns[-1] + 1], path)
         finally:
             client.terminate()
-            client.wait(timeout=30)
+            try:
+                client.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                client.kill()
 
 
 render = os.path.join(here, "relief_paraview_render.py")
 for name, options in (("paraview_two_ranks", []), ("paraview_rank_split", ["--ranks-coloured"])):
-    subprocess.run(mpiexec + ["-n", "2", "pvbatch", "--force-offscreen-rendering", render,
+    subprocess.run(mpiexec + ["-n", "2", pvbatch, "--force-offscreen-rendering", render,
                               "--plugin", plugin, "--data", data, "--redistribute", "--output",
                               os.path.join(output, name + ".png")] + options, check=True)
     os.remove(os.path.join(output, name + ".json"))

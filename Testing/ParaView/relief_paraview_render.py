@@ -15,8 +15,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import relief_paraview_scene as scene  # noqa: E402
 
-from paraview.simple import (ColorBy, Connect, Hide, ProcessIdScalars, Render, Show,  # noqa: E402
-                             SaveScreenshot)
+from paraview.simple import (ColorBy, Connect, GetActiveViewOrCreate, Hide,  # noqa: E402
+                             ProcessIdScalars, Render, SaveScreenshot, Show)
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkOutputWindow  # noqa: E402
 from vtkmodules.util.misc import calldata_type  # noqa: E402
 
@@ -43,6 +43,10 @@ for event in ("WarningEvent", "ErrorEvent"):
 if arguments.server:
     Connect("127.0.0.1", arguments.server)
 scene.load_plugin(arguments.plugin, remote=bool(arguments.server))
+if arguments.server:
+    # the server's ranks render and IceT composites them, however small the data (by
+    # default ParaView draws data under 20 MB on the client)
+    GetActiveViewOrCreate("RenderView").RemoteRenderThreshold = 0
 source, view, display = scene.brick_wall(arguments.data, arguments.redistribute)
 if arguments.ranks_coloured:
     Hide(source, view)

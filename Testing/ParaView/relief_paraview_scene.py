@@ -17,7 +17,8 @@ from relief_bricks import SIZE, brick_wall, load_plugin, tiled_plane  # noqa: E4
 
 
 def ranks_with_cells(source):
-    """How many MPI ranks hold cells of source's output."""
+    """The highest rank holding cells of source's output, plus one: on 2 ranks, 2 where
+    both hold cells (rank 0 holds some wherever any rank does)."""
     from paraview.simple import Delete, ProcessIdScalars
     ids = ProcessIdScalars(Input=source)
     ids.UpdatePipeline()

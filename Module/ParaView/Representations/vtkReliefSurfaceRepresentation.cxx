@@ -6,6 +6,7 @@
 #include "vtkOpenGLDerivativeReliefMapper.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
 #include "vtkOpenGLReliefMapper.h"
+#include "vtkPVView.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkTexture.h"
 
@@ -61,12 +62,36 @@ void vtkReliefSurfaceRepresentation::SetReliefHeightMap(vtkTexture* texture)
   if (texture != this->HeightMap)
   {
     this->HeightMap = texture;
-    vtkAlgorithmOutput* heights = texture && texture->GetNumberOfInputConnections(0)
-      ? texture->GetInputConnection(0, 0)
-      : nullptr;
-    this->GetReliefMapper()->GetReliefMapper()->SetHeightMapConnection(heights);
+    this->ConnectHeightMap();
     this->Modified();
   }
+}
+
+void vtkReliefSurfaceRepresentation::ConnectHeightMap()
+{
+  vtkTexture* texture = this->HeightMap;
+  vtkAlgorithmOutput* heights = texture && texture->GetNumberOfInputConnections(0)
+    ? texture->GetInputConnection(0, 0)
+    : nullptr;
+  vtkOpenGLReliefMapper* prototype = this->GetReliefMapper()->GetReliefMapper();
+  vtkAlgorithmOutput* current =
+    prototype->GetNumberOfInputConnections(1) ? prototype->GetInputConnection(1, 0) : nullptr;
+  if (heights != current)
+  {
+    prototype->SetHeightMapConnection(heights);
+  }
+}
+
+void vtkReliefSurfaceRepresentation::SetArrayIdNames(const char*, const char*) {}
+
+int vtkReliefSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* request,
+  vtkInformation* inputInformation, vtkInformation* outputInformation)
+{
+  if (request == vtkPVView::REQUEST_RENDER())
+  {
+    this->ConnectHeightMap();
+  }
+  return this->Superclass::ProcessViewRequest(request, inputInformation, outputInformation);
 }
 
 vtkTexture* vtkReliefSurfaceRepresentation::GetReliefHeightMap()
@@ -96,9 +121,8 @@ void vtkReliefSurfaceRepresentation::SetReliefSelfShadowing(bool enabled)
 
 void vtkReliefSurfaceRepresentation::SetReliefHeightConvention(int convention)
 {
-  vtkOpenGLReliefMapper* prototype = this->GetReliefMapper()->GetReliefMapper();
-  prototype->GetReliefTextureFilter()->SetInputConvention(convention);
-  prototype->Modified(); // the block mappers copy the filter's settings when it changes
+  this->GetReliefMapper()->GetReliefMapper()->GetReliefTextureFilter()->SetInputConvention(
+    convention);
 }
 
 void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)

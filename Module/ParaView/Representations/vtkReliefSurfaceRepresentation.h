@@ -8,7 +8,10 @@
  * colour texture, lighting and the other Surface properties work as for Surface. The
  * relief fragments write their true depth, so ParaView's compositing across MPI ranks
  * (IceT) orders them with everything else. While ParaView interacts with a level of
- * detail (large data), the decimated surface is drawn plainly.
+ * detail (large data), the decimated surface is drawn plainly. What Surface sets only on
+ * vtkCompositePolyDataMapper2 does not reach the relief: per-block colour, opacity and
+ * visibility, seamless texture coordinates, and the selection's id arrays (cells are
+ * picked by the relief mapper's own ids, blocks are not told apart).
  *
  * Without a height map it draws the plain surface, and the relief mapper says, once,
  * what to set (a colour texture's luminance is no height: mortar, lighter than bricks,
@@ -68,9 +71,24 @@ public:
   /// The mapper drawing the relief, for the settings not forwarded here.
   vtkCompositeReliefMapper* GetReliefMapper();
 
+  /**
+   * Surface's names the selection's id arrays on vtkCompositePolyDataMapper2, which this
+   * representation does not draw with (ParaView's views call it around every selection,
+   * on every representation): nothing to do.
+   */
+  void SetArrayIdNames(const char* pointArray, const char* cellArray) override;
+
+  /// Surface's, and at each render the height map's current image: the texture's input
+  /// may be set or changed after the texture was given (a pipeline Texture proxy, a state).
+  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inputInformation,
+    vtkInformation* outputInformation) override;
+
 protected:
   vtkReliefSurfaceRepresentation();
   ~vtkReliefSurfaceRepresentation() override;
+
+  /// The relief mapper's height map: the height map texture's input, if any.
+  void ConnectHeightMap();
 
   int ReliefFrame = TANGENT;
   vtkSmartPointer<vtkTexture> HeightMap;

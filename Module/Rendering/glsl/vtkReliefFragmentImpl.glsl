@@ -23,7 +23,8 @@
   ReliefFrame reliefFrame = reliefFrameOf(reliefFragment);
   // texture coordinates that map no area here (the triangle's points share one (u, v) or
   // lie on a line) give the relief no direction, and its rays would run without end: the
-  // fragment is shaded plainly (vtkReliefSurfaceFilter warns, with the same test)
+  // fragment is shaded plainly (vtkReliefSurfaceFilter warns, testing the triangle's
+  // corners alike)
   float reliefTCoordArea = abs(reliefGradX.x * reliefGradY.y - reliefGradX.y * reliefGradY.x);
   bool reliefMapsArea = reliefTCoordArea >
     1e-6 * max(dot(reliefGradX, reliefGradX), dot(reliefGradY, reliefGradY));
