@@ -15,15 +15,13 @@ import threading
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import relief_paraview_images as images  # noqa: E402
+import relief_paraview_programs as programs  # noqa: E402
 
 plugin, data, baseline, output = sys.argv[1:5]
 render = os.path.join(os.path.dirname(os.path.abspath(__file__)), "relief_paraview_render.py")
-# the programs CMake found (Testing/ParaView/CMakeLists.txt), else those on PATH;
-# --oversubscribe: 2 ranks even on a machine of fewer cores
-mpiexec = [os.environ.get("RELIEF_MPIEXEC", "mpiexec"), "--oversubscribe"] + \
-    (["--allow-run-as-root"] if os.geteuid() == 0 else [])
-pvserver = os.environ.get("RELIEF_PVSERVER", "pvserver")
-pvpython = os.environ.get("RELIEF_PVPYTHON", "pvpython")
+mpiexec = programs.MPIEXEC
+pvserver = programs.program("pvserver")
+pvpython = programs.program("pvpython")
 image = os.path.join(output, "TestReliefParaViewClientServer.png")
 
 with socket.socket() as probe:  # a port nobody listens on
@@ -66,11 +64,7 @@ try:
     if share > 0.001:
         failures.append("the screenshot differs from the baseline in %.3f%%" % (100 * share))
 finally:
-    server.terminate()
-    try:
-        server.wait(timeout=30)
-    except subprocess.TimeoutExpired:
-        server.kill()
+    programs.stop(server)
 for failure in failures:
     print("FAILED:", failure)
 sys.exit(1 if failures else 0)

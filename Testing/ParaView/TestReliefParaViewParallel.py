@@ -17,14 +17,12 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import relief_paraview_images as images  # noqa: E402
+import relief_paraview_programs as programs  # noqa: E402
 
 plugin, data, baseline, output = sys.argv[1:5]
 render = os.path.join(os.path.dirname(os.path.abspath(__file__)), "relief_paraview_render.py")
-# the programs CMake found (Testing/ParaView/CMakeLists.txt), else those on PATH;
-# --oversubscribe: 2 ranks even on a machine of fewer cores
-mpiexec = [os.environ.get("RELIEF_MPIEXEC", "mpiexec"), "--oversubscribe"] + \
-    (["--allow-run-as-root"] if os.geteuid() == 0 else [])
-pvbatch = os.environ.get("RELIEF_PVBATCH", "pvbatch")
+mpiexec = programs.MPIEXEC
+pvbatch = programs.program("pvbatch")
 failures = []
 
 

@@ -19,15 +19,15 @@ from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGWriter
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import relief_paraview_programs as programs  # noqa: E402
+
 plugin, data, output = sys.argv[1:4]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "Examples", "ParaView", "relief_bricks.py")
-# the programs CMake found (Testing/ParaView/CMakeLists.txt), else those on PATH;
-# --oversubscribe: 2 ranks even on a machine of fewer cores
-mpiexec = [os.environ.get("RELIEF_MPIEXEC", "mpiexec"), "--oversubscribe"] + \
-    (["--allow-run-as-root"] if os.geteuid() == 0 else [])
-pvbatch = os.environ.get("RELIEF_PVBATCH", "pvbatch")
-paraview = os.environ.get("RELIEF_PARAVIEW", "paraview")
+mpiexec = programs.MPIEXEC
+pvbatch = programs.program("pvbatch")
+paraview = programs.program("paraview")
 os.makedirs(output, exist_ok=True)
 
 
@@ -66,8 +66,7 @@ def gui(path):
     with tempfile.TemporaryDirectory() as settings:
         # a fresh user: no saved layout, no welcome dialog
         environment["HOME"] = settings
-        client = subprocess.Popen([paraview,
-                                   "--script=" + example], env=environment)
+        client = subprocess.Popen([paraview, "--script=" + example], env=environment)
         try:
             previous, still = None, 0
             for _ in range(90):
@@ -82,11 +81,7 @@ def gui(path):
             rows, columns = numpy.flatnonzero(used.any(axis=1)), numpy.flatnonzero(used.any(axis=0))
             write_png(previous[rows[0]:rows[-1] + 1, columns[0]:columns[-1] + 1], path)
         finally:
-            client.terminate()
-            try:
-                client.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                client.kill()
+            programs.stop(client)
 
 
 render = os.path.join(here, "relief_paraview_render.py")

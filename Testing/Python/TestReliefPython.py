@@ -59,6 +59,15 @@ def read_image(name):
     return reader.GetOutput()
 
 
+def window_pixels(window):
+    """The window rendered, read back as one row of ints a pixel."""
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+
+
 class TestReliefPython(unittest.TestCase):
     def test_classes_come_from_the_package(self):
         for cls in (vtkOpenGLReliefMapper, vtkOpenImageIOReader, vtkReliefTextureFilter,
@@ -341,14 +350,7 @@ class TestDerivativeRender(unittest.TestCase):
         window.SetSize(160, 120)
         window.AddRenderer(renderer)
         self.addCleanup(window.Finalize)
-
-        def pixels():
-            window.Render()
-            grab = vtkWindowToImageFilter()
-            grab.SetInput(window)
-            grab.Update()
-            return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
-        return pixels
+        return lambda: window_pixels(window)
 
     def test_ply_without_normals_in_a_pipeline(self):
         reader = vtkPLYReader()
@@ -433,18 +435,11 @@ class TestCompositeRender(unittest.TestCase):
         window.AddRenderer(renderer)
         self.addCleanup(window.Finalize)
 
-        def pixels():
-            window.Render()
-            grab = vtkWindowToImageFilter()
-            grab.SetInput(window)
-            grab.Update()
-            return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
-
-        relief = pixels()
+        relief = window_pixels(window)
         self.assertEqual(mapper.GetNumberOfBlockMappers(), 2)
         self.assertEqual(warnings.messages, [])
         mapper.GetReliefMapper().SetDepthScale(0.0)
-        flat = pixels()
+        flat = window_pixels(window)
         self.assertEqual(mapper.GetBlockMapper(1).GetDepthScale(), 0.0)
         self.assertGreater((abs(relief - flat).max(axis=1) > 16).mean(), 0.05)
 
