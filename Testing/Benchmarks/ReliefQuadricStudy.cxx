@@ -229,6 +229,11 @@ std::vector<Measurement> Measure(const Options& options)
   {
     for (const Shape& shape : Shapes)
     {
+      if (std::find(options.Shapes.begin(), options.Shapes.end(), shape.Name) ==
+        options.Shapes.end())
+      {
+        continue;
+      }
       for (double depthScale : options.DepthScales)
       {
         MeasureShape(shape, facets, depthScale, heights, relief->GetOutput(), window, renderer,

@@ -19,6 +19,8 @@ struct Options
   int HeightMapSize = 64;     ///< the stones height map resampled to this square size
   /// facets around each shape (a torus has half as many around its tube)
   std::vector<int> Facets = { 24, 32 };
+  /// the shapes measured, of "sphere", "cylinder" and "torus"
+  std::vector<std::string> Shapes = { "sphere", "cylinder", "torus" };
   /// deep relief, and shallow: at 0.005 even the stones' tops lie closer to the surface than
   /// the polygons sag below it at 24 facets, so that the hull decides the outline
   std::vector<double> DepthScales = { 0.05, 0.005 };

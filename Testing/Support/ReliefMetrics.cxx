@@ -38,23 +38,23 @@ OIIO::ImageBuf Rgb(const ReliefMetrics::Capture& capture)
   return rgb;
 }
 
-// SSIM's window: a normalised 11x11 Gaussian of sigma 1.5, centred on the origin.
+// SSIM's window, a normalised 11x11 Gaussian of sigma 1.5 centred on the origin, as its two
+// one-dimensional factors: convolving with both in turn costs 22 taps a pixel instead of 121
+// and gives the same values wherever the window lies inside the image, the only pixels SSIM
+// averages.
 constexpr int WindowRadius = 5;
-OIIO::ImageBuf SsimWindow()
+OIIO::ImageBuf SsimWindowFactor(bool horizontal)
 {
-  OIIO::ImageSpec spec(2 * WindowRadius + 1, 2 * WindowRadius + 1, 1, OIIO::TypeDesc::FLOAT);
-  spec.x = -WindowRadius;
-  spec.y = -WindowRadius;
+  const int length = 2 * WindowRadius + 1;
+  OIIO::ImageSpec spec(horizontal ? length : 1, horizontal ? 1 : length, 1, OIIO::TypeDesc::FLOAT);
+  (horizontal ? spec.x : spec.y) = -WindowRadius;
   spec.full_x = spec.x;
   spec.full_y = spec.y;
   OIIO::ImageBuf window(spec);
-  for (int y = -WindowRadius; y <= WindowRadius; ++y)
+  for (int k = -WindowRadius; k <= WindowRadius; ++k)
   {
-    for (int x = -WindowRadius; x <= WindowRadius; ++x)
-    {
-      const float weight = std::exp(-(x * x + y * y) / (2.0f * 1.5f * 1.5f));
-      window.setpixel(x, y, &weight);
-    }
+    const float weight = std::exp(-(k * k) / (2.0f * 1.5f * 1.5f));
+    window.setpixel(horizontal ? k : 0, horizontal ? 0 : k, &weight);
   }
   return window;
 }
@@ -75,9 +75,12 @@ OIIO::ImageBuf Centred(const OIIO::ImageBuf& image)
 }
 
 // The local mean of `image` under the SSIM window.
-std::vector<float> Mean(const OIIO::ImageBuf& image, const OIIO::ImageBuf& window)
+std::vector<float> Mean(const OIIO::ImageBuf& image)
 {
-  return Values(OIIO::ImageBufAlgo::convolve(image, window));
+  static const OIIO::ImageBuf rows = SsimWindowFactor(true);
+  static const OIIO::ImageBuf columns = SsimWindowFactor(false);
+  return Values(
+    OIIO::ImageBufAlgo::convolve(OIIO::ImageBufAlgo::convolve(image, rows), columns));
 }
 }
 
@@ -225,16 +228,15 @@ ColourError MeasureColourError(const Capture& method, const Capture& truth)
   // E[x^2] - E[x]^2 of bright flat regions would cancel to noise as large as C2
   const OIIO::ImageBuf x = Luma(method);
   const OIIO::ImageBuf y = Luma(truth);
-  const OIIO::ImageBuf window = SsimWindow();
-  const std::vector<float> meanX = Mean(x, window);
-  const std::vector<float> meanY = Mean(y, window);
+  const std::vector<float> meanX = Mean(x);
+  const std::vector<float> meanY = Mean(y);
   const OIIO::ImageBuf shiftedX = Centred(x);
   const OIIO::ImageBuf shiftedY = Centred(y);
-  const std::vector<float> shiftedMeanX = Mean(shiftedX, window);
-  const std::vector<float> shiftedMeanY = Mean(shiftedY, window);
-  const std::vector<float> meanXX = Mean(OIIO::ImageBufAlgo::mul(shiftedX, shiftedX), window);
-  const std::vector<float> meanYY = Mean(OIIO::ImageBufAlgo::mul(shiftedY, shiftedY), window);
-  const std::vector<float> meanXY = Mean(OIIO::ImageBufAlgo::mul(shiftedX, shiftedY), window);
+  const std::vector<float> shiftedMeanX = Mean(shiftedX);
+  const std::vector<float> shiftedMeanY = Mean(shiftedY);
+  const std::vector<float> meanXX = Mean(OIIO::ImageBufAlgo::mul(shiftedX, shiftedX));
+  const std::vector<float> meanYY = Mean(OIIO::ImageBufAlgo::mul(shiftedY, shiftedY));
+  const std::vector<float> meanXY = Mean(OIIO::ImageBufAlgo::mul(shiftedX, shiftedY));
   const double c1 = 0.01 * 0.01;
   const double c2 = 0.03 * 0.03;
   double sum = 0.0;
