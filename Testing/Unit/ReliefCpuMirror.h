@@ -100,11 +100,30 @@ struct CellMap
 using ConeStepMap = CellMap<vec2>;
 using SafetyRadiusMap = CellMap<float>;
 
+/// vtkPathFeatureTextureFilter's two textures, texel by texel, the grid repeating.
+struct PathTextures
+{
+  int GridWidth = 1;
+  int GridHeight = 1;
+  std::vector<vec4> Grid;
+  std::vector<vec4> Data;
+
+  vec4 Cell(vec2 cell) const
+  {
+    const int i = ((static_cast<int>(cell.x) % this->GridWidth) + this->GridWidth) % this->GridWidth;
+    const int j =
+      ((static_cast<int>(cell.y) % this->GridHeight) + this->GridHeight) % this->GridHeight;
+    return this->Grid[static_cast<size_t>(j) * this->GridWidth + i];
+  }
+  vec4 Texel(int index) const { return this->Data[static_cast<size_t>(index)]; }
+};
+
 /// The field and the acceleration maps the shader code reads; set them before a search.
 inline const DepthField* CurrentField = nullptr;
 inline const DepthPyramid* CurrentPyramid = nullptr;
 inline const ConeStepMap* CurrentConeMap = nullptr;
 inline const SafetyRadiusMap* CurrentRadii = nullptr;
+inline const PathTextures* CurrentPaths = nullptr;
 
 inline float SampleCurrentField(vec2 uv)
 {
@@ -126,6 +145,8 @@ inline vec4 CellDepths(vec2 cell)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
 #define RELIEF_CONE_STEP(cell) CurrentConeMap->At(cell)
 #define RELIEF_SAFETY_RADIUS(cell) CurrentRadii->At(cell)
+#define RELIEF_PATH_TEXEL(index) CurrentPaths->Texel(index)
+#define RELIEF_PATH_CELL(cell) CurrentPaths->Cell(cell)
 // The shader sources, compiled once for each frame in each configuration its defines
 // allow (shader functions are not inline: one copy per test source). The searches come
 // with every frame, as in the shader: a ray's reads depend on RELIEF_EXACT_DISTANCE.
@@ -212,6 +233,8 @@ inline Search FindSearch(const std::string& function)
 #undef RELIEF_PYRAMID_TOP
 #undef RELIEF_CONE_STEP
 #undef RELIEF_SAFETY_RADIUS
+#undef RELIEF_PATH_TEXEL
+#undef RELIEF_PATH_CELL
 }
 
 #endif

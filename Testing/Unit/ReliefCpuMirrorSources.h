@@ -8,6 +8,7 @@
 #include "vtkReliefSafetySearch.glsl"
 #include "vtkReliefConeSearch.glsl"
 #include "vtkReliefAutomaticSearch.glsl"
+#include "vtkReliefPathSearch.glsl"
 #include "vtkReliefTangentBasis.glsl"
 #ifdef RELIEF_MIRROR_FLAT_FRAME
 #include "vtkReliefFlatFrame.glsl"

@@ -1,0 +1,530 @@
+// vtkRelief: the path-feature search (the path-feature paper, seed 004, s5): the view ray
+// walks the cells of vtkPathFeatureTextureFilter's grid (Algorithm 1), skips a cell it
+// passes over above the cell's highest feature, and in the others finds where it first
+// enters solid matter: the base surface, minus what the features' profiles cut below it,
+// plus what they add above it (CSG, s5.3), the highest priority deciding where features
+// of different priorities overlap, cuts winning among equals. Shared with the CPU
+// mirror; see vtkReliefCommon.glsl for the rules.
+//
+// An element is a segment swept by its path's profile: across it, x = the signed distance
+// to its line in half widths (right positive), y = depth below the base; both scaled by
+// the path's perturbation, linear along the path (s5.5). Beyond its two ends the profile
+// is revolved about the end point (each half on its own side), so that a path's elements
+// join without gaps and a path ends round (s5.4): the union of the elements is the profile
+// swept along the whole path. Each profile facet, with the perturbation's linear scale,
+// is met by a straight ray where a linear function of t vanishes (s5.2), each revolved
+// facet where a quadratic does.
+//
+// The includer defines RELIEF_PATH_TEXEL(index), texel `index` (int) of the data texture,
+// and RELIEF_PATH_CELL(cell), the grid texel of cell (vec2, whole numbers, repeating).
+// Results besides the ReliefHit: reliefPathHitNormal, the outward normal at the hit as a
+// covector in (u, v, depth) (a texture-space direction w leaves the solid where
+// dot(normal, w) > 0), and reliefPathHitMaterial, the material's data texel, or -1 for
+// the actor's property.
+
+// The most elements of a cell (vtkPathFeatureTextureFilter::CellCapacity), points of a
+// profile (MaximumProfilePoints) and crossings tried per cell.
+#define RELIEF_PATH_CELL_CAPACITY 32
+#define RELIEF_PATH_PROFILE_POINTS 64
+#define RELIEF_PATH_EVENTS 96
+
+vec3 reliefPathHitNormal;
+float reliefPathHitMaterial;
+
+// One element, placed in the copy of the tile the walk is in.
+struct ReliefPathElement
+{
+  vec2 start;
+  vec2 end;
+  vec2 axis;       // unit, start to end
+  vec2 right;      // unit, the right side's normal
+  float span;      // length
+  float halfWidth;
+  float scaleStart; // the perturbation at start and end
+  float scaleEnd;
+  int profile;     // the profile's first point's texel
+  int points;
+  float extent;    // the most |x| of the profile
+  float material;
+  float priority;
+};
+
+ReliefPathElement reliefPathElement(int texel, vec2 near)
+{
+  vec4 ends = RELIEF_PATH_TEXEL(texel);
+  vec4 record = RELIEF_PATH_TEXEL(texel + 1);
+  int pathTexel = int(record.x);
+  vec4 path = RELIEF_PATH_TEXEL(pathTexel);
+  vec4 scales = RELIEF_PATH_TEXEL(pathTexel + 1);
+  vec4 profile = RELIEF_PATH_TEXEL(int(path.y));
+  ReliefPathElement element;
+  element.start = vec2(ends.x, ends.y);
+  element.end = vec2(ends.z, ends.w);
+  // the copy nearest to the cell: elements are at most a quarter tile long
+  vec2 shift = round(near - 0.5f * (element.start + element.end));
+  element.start += shift;
+  element.end += shift;
+  vec2 along = element.end - element.start;
+  element.span = max(length(along), 1e-30f);
+  element.axis = along / element.span;
+  element.right = vec2(element.axis.y, -element.axis.x);
+  element.halfWidth = path.x;
+  float pathLength = max(scales.z, 1e-30f);
+  element.scaleStart = mix(scales.x, scales.y, record.y / pathLength);
+  element.scaleEnd = mix(scales.x, scales.y, record.z / pathLength);
+  element.profile = int(path.y) + 1;
+  element.points = min(int(profile.x), RELIEF_PATH_PROFILE_POINTS);
+  element.extent = profile.y;
+  element.material = path.z;
+  element.priority = path.w;
+  return element;
+}
+
+vec2 reliefPathPoint(ReliefPathElement element, int k)
+{
+  vec4 pair = RELIEF_PATH_TEXEL(element.profile + k / 2);
+  return (k - 2 * (k / 2)) == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+}
+
+// Whether (x, y) lies inside the profile closed by its last-to-first segment (crossings
+// of a ray toward +x, even-odd).
+bool reliefPathInsideProfile(ReliefPathElement element, float x, float y)
+{
+  bool inside = false;
+  vec2 previous = reliefPathPoint(element, element.points - 1);
+  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
+  {
+    vec2 point = reliefPathPoint(element, k);
+    if ((point.y > y) != (previous.y > y))
+    {
+      float crossing = point.x + (y - point.y) * (previous.x - point.x) / (previous.y - point.y);
+      inside = x < crossing ? !inside : inside;
+    }
+    previous = point;
+  }
+  return inside;
+}
+
+// The profile coordinates (x, y) of a point, and the scale there (z); z = 0 where the
+// feature has narrowed to nothing.
+vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
+{
+  vec2 offset = vec2(point.x, point.y) - element.start;
+  float along = dot(offset, element.axis);
+  float across = dot(offset, element.right);
+  float scale =
+    mix(element.scaleStart, element.scaleEnd, clamp(along / element.span, 0.0f, 1.0f));
+  if (along < 0.0f || along > element.span)
+  {
+    // the revolved end: the distance to the end point, on the side the point is
+    vec2 centre = along < 0.0f ? element.start : element.end;
+    float side = across >= 0.0f ? 1.0f : -1.0f;
+    across = side * length(vec2(point.x, point.y) - centre);
+  }
+  if (!(scale > 1e-6f))
+  {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  return vec3(across / (element.halfWidth * scale), (point.z - base) / scale, scale);
+}
+
+// What an element makes of a point: 0 nothing, 1 added matter, 2 a cut (which reaches up
+// through everything above its opening, s5.3).
+int reliefPathElementClass(ReliefPathElement element, vec3 point, float base)
+{
+  vec3 profile = reliefPathProfileAt(element, point, base);
+  if (profile.z == 0.0f || abs(profile.x) > element.extent)
+  {
+    return 0;
+  }
+  float opening = 1e-6f;
+  if (profile.y >= 0.0f)
+  {
+    return reliefPathInsideProfile(element, profile.x, max(profile.y, opening)) ? 2 : 0;
+  }
+  if (reliefPathInsideProfile(element, profile.x, profile.y))
+  {
+    return 1;
+  }
+  return reliefPathInsideProfile(element, profile.x, opening) ? 2 : 0;
+}
+
+// Component `slot` of a texel of a cell's list.
+float reliefPathEntry(vec4 entries, int slot)
+{
+  return slot == 0 ? entries.x : (slot == 1 ? entries.y : (slot == 2 ? entries.z : entries.w));
+}
+
+// Whether a point is solid: the highest priority among the elements that hold it
+// decides, a cut winning among equals; elsewhere the base surface.
+bool reliefPathSolid(int list, int count, vec2 near, vec3 point, float base)
+{
+  float best = -1e30f;
+  bool cut = false;
+  bool held = false;
+  for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+  {
+    vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
+    int slot = k - 4 * (k / 4);
+    ReliefPathElement element = reliefPathElement(int(reliefPathEntry(entries, slot)), near);
+    int kind = reliefPathElementClass(element, point, base);
+    if (kind != 0 && element.priority >= best)
+    {
+      cut = element.priority > best ? kind == 2 : (cut || kind == 2);
+      best = element.priority;
+      held = true;
+    }
+  }
+  return held ? !cut : point.z >= base;
+}
+
+// The next crossing of a surface after `after`, with its normal and material.
+struct ReliefPathEvent
+{
+  float t;
+  vec3 normal; // the gradient of the function that vanishes there, in (u, v, depth)
+  float material;
+};
+
+ReliefPathEvent reliefPathKeep(
+  ReliefPathEvent best, float t, float after, vec3 normal, float material)
+{
+  if (t > after && t < best.t)
+  {
+    best.t = t;
+    best.normal = normal;
+    best.material = material;
+  }
+  return best;
+}
+
+// The roots of a t^2 + b t + c, low then high (-1e30 where there are none).
+vec2 reliefPathRoots(float a, float b, float c)
+{
+  if (abs(a) < 1e-12f * (abs(b) + abs(c)))
+  {
+    float root = abs(b) > 0.0f ? -c / b : -1e30f;
+    return vec2(root, root);
+  }
+  float discriminant = b * b - 4.0f * a * c;
+  if (discriminant < 0.0f)
+  {
+    return vec2(-1e30f, -1e30f);
+  }
+  float q = -0.5f * (b >= 0.0f ? b + sqrt(discriminant) : b - sqrt(discriminant));
+  float r1 = q / a;
+  float r2 = q != 0.0f ? c / q : r1;
+  return vec2(min(r1, r2), max(r1, r2));
+}
+
+// Whether the ray point at t lies on the facet from p0 to p1 of the element's profile
+// (within the facet's span), on its straight part (end 0) or revolved about its start
+// (-1) or end (+1).
+bool reliefPathOnFacet(ReliefPathElement element, ReliefRay ray, float t, float base, vec2 p0,
+  vec2 p1, float end)
+{
+  vec3 point = reliefRayAt(ray, t);
+  vec2 offset = vec2(point.x, point.y) - element.start;
+  float along = dot(offset, element.axis);
+  float part = along < 0.0f ? -1.0f : (along > element.span ? 1.0f : 0.0f);
+  if (part != end)
+  {
+    return false;
+  }
+  vec3 profile = reliefPathProfileAt(element, point, base);
+  if (profile.z == 0.0f)
+  {
+    return false;
+  }
+  vec2 facet = p1 - p0;
+  vec2 from = vec2(profile.x, profile.y) - p0;
+  float facetLength = length(facet);
+  float lambda = dot(from, facet) / (facetLength * facetLength);
+  // on the facet's line (a revolved end's root may hold the other half's x)
+  float apart = abs(from.x * facet.y - from.y * facet.x) / facetLength;
+  return lambda >= -1e-4f && lambda <= 1.0f + 1e-4f && apart <= 1e-3f;
+}
+
+// The first crossing after `after` of the ray with the element's facet p0-p1 and with the
+// wall up from where the facet meets the base (the cut's opening): on the straight part,
+// a linear function of t; on the revolved ends, a quadratic.
+ReliefPathEvent reliefPathFacetEvents(ReliefPathEvent best, ReliefPathElement element,
+  ReliefRay ray, float base, vec2 p0, vec2 p1, float after)
+{
+  vec2 facet = p1 - p0;
+  if (dot(facet, facet) == 0.0f)
+  {
+    return best; // a repeated point
+  }
+  // the straight part: X = across, Y = depth below the base, S = scale, all linear in t;
+  // the facet is (Y - y0 S) fx - (X / w - x0 S) fy = 0
+  vec2 offset = vec2(ray.origin.x, ray.origin.y) - element.start;
+  vec2 run = vec2(ray.direction.x, ray.direction.y);
+  float along0 = dot(offset, element.axis);
+  float along1 = dot(run, element.axis);
+  float across0 = dot(offset, element.right);
+  float across1 = dot(run, element.right);
+  float slope = (element.scaleEnd - element.scaleStart) / element.span;
+  float scale0 = element.scaleStart + slope * along0;
+  float scale1 = slope * along1;
+  float depth0 = ray.origin.z - base;
+  float depth1 = ray.direction.z;
+  float w = element.halfWidth;
+  float c0 = (depth0 - p0.y * scale0) * facet.x - (across0 / w - p0.x * scale0) * facet.y;
+  float c1 = (depth1 - p0.y * scale1) * facet.x - (across1 / w - p0.x * scale1) * facet.y;
+  vec3 gradient = vec3(
+    -facet.y / w * element.right.x + (p0.x * facet.y - p0.y * facet.x) * slope * element.axis.x,
+    -facet.y / w * element.right.y + (p0.x * facet.y - p0.y * facet.x) * slope * element.axis.y,
+    facet.x);
+  if (c1 != 0.0f)
+  {
+    float t = -c0 / c1;
+    if (t > after && t < best.t && reliefPathOnFacet(element, ray, t, base, p0, p1, 0.0f))
+    {
+      best = reliefPathKeep(best, t, after, gradient, element.material);
+    }
+  }
+  // the revolved ends: r^2 = (w s x)^2, x = x0 + fx (Y / s - y0) / fy along the facet
+  for (int end = -1; end <= 1; end += 2)
+  {
+    vec2 centre = end < 0 ? element.start : element.end;
+    float scale = end < 0 ? element.scaleStart : element.scaleEnd;
+    vec2 q0 = vec2(ray.origin.x, ray.origin.y) - centre;
+    float radius = w * scale;
+    if (!(radius > 0.0f))
+    {
+      continue;
+    }
+    if (facet.y != 0.0f)
+    {
+      // x = g0 + g1 t
+      float g0 = p0.x + facet.x * (depth0 / scale - p0.y) / facet.y;
+      float g1 = facet.x * depth1 / (scale * facet.y);
+      vec2 roots = reliefPathRoots(dot(run, run) - radius * radius * g1 * g1,
+        2.0f * (dot(q0, run) - radius * radius * g0 * g1),
+        dot(q0, q0) - radius * radius * g0 * g0);
+      for (int k = 0; k < 2; ++k)
+      {
+        float t = k == 0 ? roots.x : roots.y;
+        if (t > after && t < best.t &&
+          reliefPathOnFacet(element, ray, t, base, p0, p1, float(end)))
+        {
+          vec3 point = reliefRayAt(ray, t);
+          vec2 from = vec2(point.x, point.y) - centre;
+          float x = g0 + g1 * t;
+          // F = (w s x)^2 - r^2
+          best = reliefPathKeep(best, t, after,
+            vec3(-2.0f * from.x, -2.0f * from.y,
+              2.0f * radius * radius * x * facet.x / (scale * facet.y)),
+            element.material);
+        }
+      }
+    }
+    else
+    {
+      // a level facet: the ray's depth alone
+      float t = depth1 != 0.0f ? (p0.y * scale - depth0) / depth1 : -1e30f;
+      if (t > after && t < best.t &&
+        reliefPathOnFacet(element, ray, t, base, p0, p1, float(end)))
+      {
+        best = reliefPathKeep(best, t, after, vec3(0.0f, 0.0f, 1.0f), element.material);
+      }
+    }
+  }
+  return best;
+}
+
+// The walls up from the cut's opening at profile x = opening (s5.3): where the ray, above
+// the base, crosses x = opening.
+ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement element,
+  ReliefRay ray, float base, float opening, float after)
+{
+  vec2 offset = vec2(ray.origin.x, ray.origin.y) - element.start;
+  vec2 run = vec2(ray.direction.x, ray.direction.y);
+  float slope = (element.scaleEnd - element.scaleStart) / element.span;
+  float w = element.halfWidth;
+  float c0 = dot(offset, element.right) -
+    w * opening * (element.scaleStart + slope * dot(offset, element.axis));
+  float c1 = dot(run, element.right) - w * opening * slope * dot(run, element.axis);
+  if (c1 != 0.0f)
+  {
+    float t = -c0 / c1;
+    vec3 point = reliefRayAt(ray, t);
+    float along = dot(vec2(point.x, point.y) - element.start, element.axis);
+    if (point.z < base && along >= 0.0f && along <= element.span)
+    {
+      best = reliefPathKeep(best, t, after,
+        vec3(element.right.x - w * opening * slope * element.axis.x,
+          element.right.y - w * opening * slope * element.axis.y, 0.0f),
+        element.material);
+    }
+  }
+  for (int end = -1; end <= 1; end += 2)
+  {
+    vec2 centre = end < 0 ? element.start : element.end;
+    float radius = w * (end < 0 ? element.scaleStart : element.scaleEnd) * abs(opening);
+    vec2 q0 = vec2(ray.origin.x, ray.origin.y) - centre;
+    vec2 roots = reliefPathRoots(dot(run, run), 2.0f * dot(q0, run), dot(q0, q0) - radius * radius);
+    for (int k = 0; k < 2; ++k)
+    {
+      float t = k == 0 ? roots.x : roots.y;
+      vec3 point = reliefRayAt(ray, t);
+      vec2 from = vec2(point.x, point.y) - element.start;
+      float along = dot(from, element.axis);
+      float across = dot(from, element.right);
+      bool beyond = end < 0 ? along < 0.0f : along > element.span;
+      if (point.z < base && beyond && (across >= 0.0f) == (opening >= 0.0f))
+      {
+        vec2 outward = vec2(point.x, point.y) - centre;
+        best = reliefPathKeep(best, t, after, vec3(outward.x, outward.y, 0.0f), element.material);
+      }
+    }
+  }
+  return best;
+}
+
+// The first crossing after `after` of any surface of the cell: the base, and each
+// element's facets and walls.
+ReliefPathEvent reliefPathNextEvent(ReliefRay ray, int list, int count, vec2 near, float base,
+  float after, float until)
+{
+  ReliefPathEvent best;
+  best.t = until;
+  best.normal = vec3(0.0f, 0.0f, 1.0f);
+  best.material = -1.0f;
+  if (ray.direction.z != 0.0f)
+  {
+    best = reliefPathKeep(best, (base - ray.origin.z) / ray.direction.z, after,
+      vec3(0.0f, 0.0f, 1.0f), -1.0f);
+  }
+  for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+  {
+    vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
+    int slot = k - 4 * (k / 4);
+    ReliefPathElement element = reliefPathElement(int(reliefPathEntry(entries, slot)), near);
+    vec2 previous = reliefPathPoint(element, element.points - 1);
+    for (int p = 0; p < RELIEF_PATH_PROFILE_POINTS && p < element.points; ++p)
+    {
+      vec2 point = reliefPathPoint(element, p);
+      best = reliefPathFacetEvents(best, element, ray, base, previous, point, after);
+      if ((point.y > 0.0f) != (previous.y > 0.0f))
+      {
+        float opening =
+          point.x - point.y * (previous.x - point.x) / (previous.y - point.y);
+        best = reliefPathWallEvents(best, element, ray, base, opening, after);
+      }
+      previous = point;
+    }
+  }
+  return best;
+}
+
+// The path-feature walk of a straight ray from tStart to tEnd; the first entry into solid
+// matter, or a miss at tEnd. `samples` counts cells visited and elements tested.
+ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
+{
+  vec4 header = RELIEF_PATH_TEXEL(0);
+  float base = header.x;
+  vec2 size = vec2(header.z, header.w);
+  ReliefGridRay grid;
+  grid.origin = vec2(ray.origin.x * size.x, ray.origin.y * size.y);
+  grid.direction = vec2(ray.direction.x * size.x, ray.direction.y * size.y);
+  grid.depth = ray.origin.z;
+  grid.descent = ray.direction.z;
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
+  vec2 cell = floor(reliefGridAt(grid, tStart));
+  float tIn = tStart;
+  int samples = 0;
+  float tHit = -1.0f;
+  vec3 normal = vec3(0.0f, 0.0f, 1.0f);
+  float material = -1.0f;
+  for (int i = 0; i < RELIEF_MAX_ITERATIONS && tHit < 0.0f; ++i)
+  {
+    vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
+    float tOut = max(min(min(next.x, next.y), tEnd), tIn);
+    vec4 cellTexel = RELIEF_PATH_CELL(cell);
+    samples += 1;
+    // Algorithm 1: a ray that leaves the cell above its highest feature passes it by
+    if (ray.origin.z + tOut * ray.direction.z >= cellTexel.z)
+    {
+      int list = int(cellTexel.x);
+      int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
+      vec2 near = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
+      float t = tIn;
+      ReliefPathEvent entered;
+      entered.normal = vec3(0.0f, 0.0f, 1.0f);
+      entered.material = -1.0f;
+      for (int e = 0; e < RELIEF_PATH_EVENTS; ++e)
+      {
+        ReliefPathEvent event =
+          reliefPathNextEvent(ray, list, count, near, base, t + 1e-6f, tOut);
+        samples += count;
+        if (reliefPathSolid(list, count, near, reliefRayAt(ray, 0.5f * (t + event.t)), base))
+        {
+          tHit = t;
+          normal = entered.normal;
+          material = entered.material;
+          break;
+        }
+        if (event.t >= tOut)
+        {
+          break;
+        }
+        t = event.t;
+        entered = event;
+      }
+    }
+    if (tHit >= 0.0f || tOut >= tEnd)
+    {
+      break;
+    }
+    if (next.x < next.y)
+    {
+      cell.x += signs.x;
+    }
+    else
+    {
+      cell.y += signs.y;
+    }
+    tIn = tOut;
+  }
+  // the normal faces back along the ray, out of the matter it enters
+  float facing = dot(normal, ray.direction);
+  reliefPathHitNormal = facing > 0.0f ? -normal : normal;
+  reliefPathHitMaterial = material;
+  bool found = tHit >= 0.0f;
+  float t = found ? tHit : tEnd;
+  float back = min(1e-3f / max(ray.direction.z, 1e-6f), 0.5f * (t - tStart));
+  return reliefHitAt(ray, t, found ? max(tStart, t - back) : t, found, samples);
+}
+
+// The path-feature search as a relief search: the view ray down to the deepest cut.
+ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  vec4 header = RELIEF_PATH_TEXEL(0);
+  float deepest = header.y;
+  float tEnd = (deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f;
+  return reliefPathWalk(ray, 0.0f, max(tEnd, 1e-4f));
+}
+
+// Self-shadowing (s5.6): the same walk along the light ray, from where it enters the
+// features (depth 0) to the hit's clear point; meeting matter on the way blocks the light.
+float reliefPathLightVisibility(vec3 clearPoint, vec3 lightDirection)
+{
+  if (lightDirection.z >= 0.0f)
+  {
+    return 0.0f;
+  }
+  if (clearPoint.z <= 0.0f)
+  {
+    return 1.0f;
+  }
+  vec3 hitNormal = reliefPathHitNormal;
+  float hitMaterial = reliefPathHitMaterial;
+  ReliefHit blocked = reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f);
+  reliefPathHitNormal = hitNormal;
+  reliefPathHitMaterial = hitMaterial;
+  return blocked.hit && blocked.t < 1.0f ? 0.0f : 1.0f;
+}

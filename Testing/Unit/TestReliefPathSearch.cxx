@@ -1,0 +1,219 @@
+// The path-feature search of vtkReliefPathSearch.glsl, run on the CPU through the very
+// source the GPU compiles, on vtkPathFeatureTextureFilter's textures: analytic cases
+// (a groove's floor, a V's wall, a revolved end, crossings, priorities, a crack, an
+// overhang) and random rays against the marched reference of ReliefPathFixtures.h.
+#include "ReliefPathFixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace
+{
+using namespace ReliefCpuMirror;
+using namespace ReliefPathFixtures;
+
+// A scene's textures, kept while its searches run.
+struct Built
+{
+  vtkNew<vtkPathFeatureTextureFilter> Filter;
+  PathTextures Textures;
+  double Base = 0.0;
+  double Deepest = 0.0;
+
+  explicit Built(const Scene& scene, int resolution = 0)
+  {
+    this->Filter->SetPathsData(PathsData(scene.Paths));
+    if (!scene.Profiles.empty())
+    {
+      this->Filter->SetProfilesData(ProfilesData(scene.Profiles));
+    }
+    this->Filter->SetGridResolution(resolution, resolution);
+    this->Filter->Update();
+    this->Textures = ReliefPathFixtures::Textures(this->Filter);
+    this->Base = this->Filter->GetBaseDepth();
+    this->Deepest = this->Filter->GetMaximumDepth();
+    CurrentPaths = &this->Textures;
+  }
+};
+
+ReliefRay Ray(vec2 uv, vec3 direction)
+{
+  return reliefViewRay(uv, direction);
+}
+
+// The depth a vertical ray at uv meets.
+float DepthAt(vec2 uv)
+{
+  return reliefSearchPathFeatures(Ray(uv, vec3(0.0f, 0.0f, 1.0f)), 0, 0).position.z;
+}
+
+const std::vector<dvec2> VGroove = { { -1.0, 0.0 }, { 0.0, 1.0 }, { 1.0, 0.0 } };
+const std::vector<dvec2> Ridge = { { -1.0, 0.0 }, { -0.5, -0.4 }, { 0.5, -0.4 }, { 1.0, 0.0 } };
+// wider below than at its opening: a dovetail (Fig. 8's non-height-field profiles)
+const std::vector<dvec2> Dovetail = { { -0.5, 0.0 }, { -1.0, 0.6 }, { 1.0, 0.6 }, { 0.5, 0.0 } };
+}
+
+TEST(ReliefPathSearch, GrooveFloorAndPlainSurface)
+{
+  Scene scene;
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1 });
+  Built built(scene);
+  EXPECT_EQ(built.Base, 0.0);
+  EXPECT_NEAR(built.Deepest, 1.0, 1e-9);
+  // the default groove is a half circle of 8 facets: 1 deep on its centre line
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.5f)), 1.0f, 1e-5f);
+  // a vertex of the profile at x = -cos(pi/4)
+  const float x = static_cast<float>(std::cos(M_PI / 4));
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.5f + 0.05f * x)), std::sin(M_PI / 4), 1e-5f);
+  // beside the groove: the plain surface, lit as the plain surface
+  const ReliefHit plain = reliefSearchPathFeatures(Ray(vec2(0.5f, 0.7f), vec3(0, 0, 1)), 0, 0);
+  EXPECT_TRUE(plain.hit);
+  EXPECT_NEAR(plain.position.z, 0.0f, 1e-6f);
+  EXPECT_NEAR(reliefPathHitNormal.z, -1.0f, 1e-6f);
+  EXPECT_EQ(reliefPathHitMaterial, -1.0f);
+}
+
+TEST(ReliefPathSearch, OverAVWallAndItsNormal)
+{
+  Scene scene;
+  scene.Profiles = { VGroove };
+  scene.Paths.push_back({ { { 0.2, 0.5 }, { 0.8, 0.5 } }, 0.2, 0 });
+  Built built(scene);
+  // the wall on the path's left (v > 0.5): depth = 1 - (v - 0.5) / 0.1
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.53f)), 0.7f, 1e-5f);
+  // an oblique ray toward -v: v = 0.58 - 0.05 t at depth t meets the wall's
+  // 1 - (v - 0.5) / 0.1 = 0.2 + 0.5 t at t = 0.4
+  const ReliefHit hit = reliefSearchPathFeatures(Ray(vec2(0.5f, 0.58f), vec3(0, -0.05f, 1)), 0, 0);
+  EXPECT_NEAR(hit.t, 0.4f, 1e-4f);
+  EXPECT_NEAR(hit.position.z, 1.0f - (hit.position.y - 0.5f) / 0.1f, 1e-4f);
+  // the wall's outward normal in (u, v, depth) points up the slope: -v and -depth
+  // in proportion to the wall's gradient, depth falling 10 per unit of v
+  const vec3 normal = normalize(reliefPathHitNormal);
+  EXPECT_NEAR(normal.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(normal.y / normal.z, 10.0f, 1e-3f);
+  EXPECT_LT(normal.z, 0.0f);
+}
+
+TEST(ReliefPathSearch, RevolvedEndsAndJoints)
+{
+  Scene scene;
+  scene.Profiles = { VGroove };
+  // an L: the corner's outside is round, its inside sharp
+  scene.Paths.push_back({ { { 0.2, 0.3 }, { 0.6, 0.3 }, { 0.6, 0.7 } }, 0.2, 0 });
+  Built built(scene);
+  // beyond the start, 0.04 from the end point: the revolved V, 0.6 deep
+  EXPECT_NEAR(DepthAt(vec2(0.16f, 0.3f)), 0.6f, 1e-5f);
+  EXPECT_NEAR(DepthAt(vec2(0.2f - 0.03f, 0.3f + 0.04f)), 0.5f, 1e-5f);
+  // past the corner's outside, 0.05 from the corner point diagonally
+  const float d = 0.05f / std::sqrt(2.0f);
+  EXPECT_NEAR(DepthAt(vec2(0.6f + d, 0.3f - d)), 0.5f, 1e-5f);
+  // inside the corner, the deeper of the two pieces
+  EXPECT_NEAR(DepthAt(vec2(0.58f, 0.33f)), 0.8f, 1e-5f);
+  EXPECT_NEAR(DepthAt(vec2(0.1f, 0.3f)), 0.0f, 1e-6f);
+}
+
+TEST(ReliefPathSearch, CrossingCutsUniteAndPrioritiesBridge)
+{
+  Scene scene;
+  scene.Profiles = { VGroove, Ridge };
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.2, 0 });    // groove along u
+  scene.Paths.push_back({ { { 0.3, 0.1 }, { 0.3, 0.9 } }, 0.2, 1 });    // ridge along v
+  scene.Paths.push_back({ { { 0.7, 0.1 }, { 0.7, 0.9 } }, 0.2, 1, 1 }); // a ridge above it
+  Built built(scene);
+  EXPECT_NEAR(built.Base, 0.4, 1e-6); // the profile went through float points
+  // the ridge's top reaches the polygon
+  EXPECT_NEAR(DepthAt(vec2(0.3f, 0.8f)), 0.0f, 1e-5f);
+  EXPECT_NEAR(DepthAt(vec2(0.2f, 0.8f)), 0.4f, 1e-5f);
+  // equal priorities: the groove's cut goes on through the ridge
+  EXPECT_NEAR(DepthAt(vec2(0.3f, 0.52f)), 0.4f + 0.8f, 1e-5f);
+  // the higher ridge bridges the groove: its top stays, the groove runs under it
+  EXPECT_NEAR(DepthAt(vec2(0.7f, 0.52f)), 0.0f, 1e-5f);
+  // on its flank, 0.16 above the base; under the flank the groove stays open
+  EXPECT_NEAR(DepthAt(vec2(0.62f, 0.5f)), 0.24f, 1e-5f);
+}
+
+TEST(ReliefPathSearch, CrackNarrowsToNothing)
+{
+  Scene scene;
+  scene.Profiles = { VGroove };
+  PathSpec crack{ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1, 0 };
+  crack.ScaleEnd = 0.0;
+  scene.Paths.push_back(crack);
+  Built built(scene);
+  // half way: half as wide and half as deep
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.5f)), 0.5f, 1e-5f);
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.5125f)), 0.25f, 1e-5f);
+  EXPECT_NEAR(DepthAt(vec2(0.3f, 0.5f)), 0.75f, 1e-5f);
+  EXPECT_NEAR(DepthAt(vec2(0.9f, 0.5f)), 0.0f, 1e-5f);
+}
+
+TEST(ReliefPathSearch, OverhangHidesWhatIsUnderIt)
+{
+  Scene scene;
+  scene.Profiles = { Dovetail };
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.2, 0 });
+  Built built(scene);
+  // straight down through the opening: the floor
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.5f)), 0.6f, 1e-5f);
+  // straight down over the undercut: the lip's top, the plain surface
+  EXPECT_NEAR(DepthAt(vec2(0.5f, 0.58f)), 0.0f, 1e-5f);
+  // slanting in through the opening toward +v (x = -0.2 - t at depth t), under the lip
+  // (|x| > 0.5), inside the undercut wall (x > -0.5 - t / 1.2) down to the floor
+  const ReliefHit hit = reliefSearchPathFeatures(Ray(vec2(0.5f, 0.52f), vec3(0, 0.1f, 1)), 0, 0);
+  EXPECT_NEAR(hit.t, 0.6f, 1e-4f);
+  EXPECT_NEAR(hit.position.y, 0.58f, 1e-5f); // beneath the lip
+}
+
+TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
+{
+  Scene scene;
+  scene.Profiles = { VGroove, Ridge, Dovetail, DefaultGroove() };
+  scene.Paths.push_back({ { { 0.05, 0.25 }, { 0.95, 0.3 } }, 0.08, 0 });
+  scene.Paths.push_back({ { { 0.2, 0.05 }, { 0.25, 0.6 }, { 0.7, 0.8 } }, 0.06, 1 });
+  scene.Paths.push_back({ { { 0.5, 0.1 }, { 0.55, 0.9 } }, 0.1, 2, 1 });
+  scene.Paths.push_back({ { { 0.9, 0.6 }, { 1.15, 0.95 } }, 0.05, 3 }); // across the tile's edge
+  PathSpec crack{ { { 0.1, 0.9 }, { 0.45, 0.7 } }, 0.06, 0 };
+  crack.ScaleEnd = 0.0;
+  scene.Paths.push_back(crack);
+  for (int resolution : { 0, 7 })
+  {
+    Built built(scene, resolution);
+    Reference reference(scene, built.Base);
+    std::mt19937 random(18);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    int rays = 0;
+    int agreeing = 0;
+    int slivers = 0;
+    for (int k = 0; k < 600; ++k)
+    {
+      // up to 80 degrees from the normal, features 0.05 to 0.1 wide, 0.4 to 1.6 deep
+      const float angle = 6.2831853f * unit(random);
+      const float run = 0.3f * unit(random);
+      const vec2 uv(unit(random), unit(random));
+      const ReliefRay ray = Ray(uv, vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
+      const ReliefHit hit = reliefSearchPathFeatures(ray, 0, 0);
+      const glm::dvec3 origin(ray.origin);
+      const glm::dvec3 direction(ray.direction);
+      const double expected = reference.Hit(origin, direction, built.Deepest, 5e-4);
+      ASSERT_GE(expected, 0.0);
+      ASSERT_TRUE(hit.hit);
+      rays += 1;
+      if (std::abs(hit.t - expected) < 1e-4)
+      {
+        agreeing += 1;
+      }
+      else if (hit.t < expected && reference.Solid(origin + (hit.t + 1e-5) * direction))
+      {
+        slivers += 1; // matter thinner than the march's step, which it stepped over
+      }
+      else
+      {
+        ADD_FAILURE() << "grid " << resolution << ": ray from " << ray.origin.x << " "
+                      << ray.origin.y << " along " << ray.direction.x << " " << ray.direction.y
+                      << " hits at " << hit.t << ", the reference at " << expected;
+      }
+    }
+    EXPECT_GE(agreeing, rays * 99 / 100) << slivers << " slivers, grid " << resolution;
+  }
+}
