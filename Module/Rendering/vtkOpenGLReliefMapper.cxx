@@ -652,7 +652,19 @@ void vtkOpenGLReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   }
   if (this->DrawingRelief)
   {
+    this->ActivateReliefTextures(true);
+  }
+}
+
+void vtkOpenGLReliefMapper::ActivateReliefTextures(bool activate)
+{
+  if (activate)
+  {
     this->Textures->Activate(this->GetActiveSearch());
+  }
+  else
+  {
+    this->Textures->Deactivate(this->GetActiveSearch());
   }
 }
 
@@ -660,7 +672,7 @@ void vtkOpenGLReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
 {
   if (this->DrawingRelief)
   {
-    this->Textures->Deactivate(this->GetActiveSearch());
+    this->ActivateReliefTextures(false);
   }
   if (this->BackFacesLeftOut)
   {
@@ -820,9 +832,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   using Rewrites = vtkReliefShaderRewrites;
   std::string declarations = vtkReliefFragmentDec;
   vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
-  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search",
-    std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
-      vtkReliefConeSearch + vtkReliefAutomaticSearch);
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Search", this->GetSearchSource());
   vtkShaderProgram::Substitute(
     declarations, "//VTK::Relief::Frame", this->GetFrameShaderCode("RELIEF_FRAGMENT_STAGE"));
   // VTK's texture and normal-map code reads its texture coordinates: make it read at the
@@ -836,7 +846,7 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   this->Insert(fragmentSource, Rewrites::FragmentSystem,
     "#extension GL_ARB_texture_gather : enable\n", &Rewrites::InsertAfter);
   this->Insert(fragmentSource, Rewrites::FragmentDeclarations,
-    this->GetActiveSearch().GetShaderDefine() + this->GetFrameDefines() +
+    this->GetSearchDefines() + this->GetFrameDefines() +
       (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations,
     &Rewrites::InsertAfter);
   this->Insert(
@@ -847,7 +857,8 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
   {
     this->Insert(fragmentSource, Rewrites::FragmentNormal,
       "  normalVCVSOutput = reliefLitNormalVC;\n"
-      "  vertexVC = vec4(reliefHitVC, 1.0);\n",
+      "  vertexVC = vec4(reliefHitVC, 1.0);\n" +
+        this->GetHitColourCode(),
       &Rewrites::InsertAfter);
   }
   this->Insert(fragmentSource, Rewrites::FragmentOutput,
@@ -858,6 +869,17 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
     "  }",
     &Rewrites::InsertBefore);
   fragmentShader->SetSource(fragmentSource);
+}
+
+std::string vtkOpenGLReliefMapper::GetSearchDefines()
+{
+  return this->GetActiveSearch().GetShaderDefine();
+}
+
+std::string vtkOpenGLReliefMapper::GetSearchSource()
+{
+  return std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
+    vtkReliefConeSearch + vtkReliefAutomaticSearch;
 }
 
 void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader)
@@ -909,11 +931,11 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
   vtkShaderProgram* program = cellBO.Program;
-  if (!this->DrawingRelief || !program->IsUniformUsed("reliefDepthTexture"))
+  if (!this->DrawingRelief || !program->IsUniformUsed("reliefDepthScale"))
   {
     return;
   }
-  this->Textures->SetShaderParameters(program, this->GetActiveSearch());
+  this->SetReliefTextureParameters(program);
   if (this->InputNormals)
   {
     program->SetUniformf(
@@ -928,6 +950,11 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
   program->SetUniformi("reliefTwoSided", this->TwoSidedRelief ? 1 : 0);
+}
+
+void vtkOpenGLReliefMapper::SetReliefTextureParameters(vtkShaderProgram* program)
+{
+  this->Textures->SetShaderParameters(program, this->GetActiveSearch());
 }
 
 void vtkOpenGLReliefMapper::SetCameraShaderParameters(

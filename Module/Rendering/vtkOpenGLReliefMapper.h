@@ -53,6 +53,7 @@ class vtkReliefSearchMethod;
 class vtkReliefTangentFrameFilter;
 class vtkReliefTextureFilter;
 class vtkRenderWindow;
+class vtkShaderProgram;
 
 class VTKRELIEFRENDERING_EXPORT vtkOpenGLReliefMapper : public vtkOpenGLPolyDataMapper
 {
@@ -292,7 +293,7 @@ public:
    * same data (and acceleration image, or method and setting) with the same relief
    * texture settings: each reports the shared bytes.
    */
-  vtkIdType GetTextureBytes();
+  virtual vtkIdType GetTextureBytes();
 
   /**
    * GPU memory all the relief mappers' textures in `window` take, in bytes, each texture
@@ -358,11 +359,22 @@ protected:
   double UsableDepthScale(vtkActor* actor);
   /// The mesh as drawn (CurrentInput): the tangent frame filter's output here.
   virtual bool UpdateReliefSurface();
-  bool UpdateReliefTexture(vtkRenderer* ren);
+  /// Brings the textures the search reads up to date: the relief texture here.
+  virtual bool UpdateReliefTexture(vtkRenderer* ren);
   /// The image connected to input port `port` (1 or 2), or null.
   vtkImageData* GetImageOnPort(int port);
   /// Brings the search method's acceleration image up to date, or falls back.
-  void UpdateAcceleration(vtkRenderer* ren);
+  virtual void UpdateAcceleration(vtkRenderer* ren);
+  /// Binds the search's textures to texture units for a render (true), frees them (false).
+  virtual void ActivateReliefTextures(bool activate);
+  /// The uniforms of the search's textures.
+  virtual void SetReliefTextureParameters(vtkShaderProgram* program);
+  /// The search's defines (RELIEF_SEARCH), before all relief code of the fragment shader.
+  virtual std::string GetSearchDefines();
+  /// The searches' GLSL (//VTK::Relief::Search).
+  virtual std::string GetSearchSource();
+  /// Code run after VTK's colours are set, before the lighting: none here.
+  virtual std::string GetHitColourCode() { return ""; }
   void SetActiveSearchMethod(int method);
   /// The description of ActiveSearchMethod.
   const vtkReliefSearchMethod& GetActiveSearch();

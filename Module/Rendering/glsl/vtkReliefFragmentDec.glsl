@@ -19,6 +19,15 @@ uniform int reliefFootprintShading; // 1: lit over the pixel's footprint
 uniform int reliefTwoSided;        // 1: back faces carry relief wherever they are drawn
 uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative determinant)
 uniform mat4 reliefVCDCMatrix;
+#ifdef RELIEF_PATH_FEATURES
+uniform sampler2D reliefPathGrid; // vtkPathFeatureTextureFilter's grid, a texel per cell
+uniform sampler2D reliefPathData; // and its data, read as one array of texels
+uniform int reliefPathDataWidth;
+#define RELIEF_PATH_TEXEL(index) texelFetch(reliefPathData, \
+  ivec2((index) % reliefPathDataWidth, (index) / reliefPathDataWidth), 0)
+#define RELIEF_PATH_CELL(cell) \
+  texelFetch(reliefPathGrid, ivec2(mod(cell, vec2(textureSize(reliefPathGrid, 0)))), 0)
+#endif
 in vec3 reliefPositionVSOutput;
 in vec2 reliefTCoordVSOutput;
 
@@ -110,8 +119,12 @@ float reliefShadow(vec3 toLightVC)
   {
     return 1.0;
   }
+#ifdef RELIEF_PATH_FEATURES
+  return reliefPathLightVisibility(reliefViewHit.clear, reliefToTexture(toLightVC));
+#else
   return reliefLightVisibility(
     reliefViewHit.clear, reliefToTexture(toLightVC), reliefLinearSteps);
+#endif
 }
 
 // The field's unit normal at `uv`, on the frame's surface tilted by `slope`: the depth's
@@ -119,6 +132,13 @@ float reliefShadow(vec3 toLightVC)
 // read as the filter encodes it.
 vec3 reliefFieldNormal(vec2 uv, vec3 slope)
 {
+#if defined(RELIEF_PATH_FEATURES)
+  // the last path search's facet: its outward covector (a, b, c) in (u, v, depth) is
+  // a axisU + b axisV - c N / s_z in view space
+  vec3 covector = reliefPathHitNormal;
+  return normalize(max(reliefDepthScale, 0.0) * (reliefAxisU * covector.x +
+    reliefAxisV * covector.y) - covector.z * (reliefFrameN + slope));
+#else
 #ifdef RELIEF_INPUT_NORMALS
   vec2 normalXY = reliefTextureAtRay(reliefNormalTexture, uv).xy;
   float normalZ = sqrt(max(1.0 - dot(normalXY, normalXY), 0.0));
@@ -128,6 +148,7 @@ vec3 reliefFieldNormal(vec2 uv, vec3 slope)
 #endif
   return normalize(reliefFrameN + slope +
     max(reliefDepthScale, 0.0) * (reliefAxisU * gradient.x + reliefAxisV * gradient.y));
+#endif
 }
 
 // The normals the pixel's footprint is lit with, and their weights (reliefShadeFootprint):
@@ -137,13 +158,52 @@ vec3 reliefFieldNormal(vec2 uv, vec3 slope)
 vec3 reliefFootprintNormals[5];
 float reliefFootprintWeights[5];
 int reliefFootprintCount = 0;
+#ifdef RELIEF_PATH_FEATURES
+float reliefFootprintMaterials[5]; // the material each normal's search met
+#endif
 
 void reliefAddFootprintNormal(vec3 normal, float weight)
 {
   reliefFootprintNormals[reliefFootprintCount] = normal;
   reliefFootprintWeights[reliefFootprintCount] = weight;
+#ifdef RELIEF_PATH_FEATURES
+  reliefFootprintMaterials[reliefFootprintCount] = reliefPathHitMaterial;
+#endif
   reliefFootprintCount += 1;
 }
+
+#ifdef RELIEF_PATH_FEATURES
+// The colours VTK's lighting reads, as the footprint's materials weighted like its normals:
+// the actor's where a search met no material of its own.
+void reliefPathShadeMaterials(
+  inout vec3 diffuse, inout vec3 specular, inout float power, float intensity)
+{
+  vec3 mixedDiffuse = vec3(0.0);
+  vec3 mixedSpecular = vec3(0.0);
+  float mixedPower = 0.0;
+  for (int k = 0; k < reliefFootprintCount; ++k)
+  {
+    float weight = reliefFootprintWeights[k];
+    int material = int(reliefFootprintMaterials[k]);
+    if (material < 0)
+    {
+      mixedDiffuse += weight * diffuse;
+      mixedSpecular += weight * specular;
+      mixedPower += weight * power;
+    }
+    else
+    {
+      vec4 colour = RELIEF_PATH_TEXEL(material);
+      mixedDiffuse += weight * intensity * colour.rgb;
+      mixedSpecular += weight * vec3(colour.a);
+      mixedPower += weight * RELIEF_PATH_TEXEL(material + 1).x;
+    }
+  }
+  diffuse = mixedDiffuse;
+  specular = mixedSpecular;
+  power = mixedPower;
+}
+#endif
 
 float reliefDiffuse(vec3 toLight)
 {

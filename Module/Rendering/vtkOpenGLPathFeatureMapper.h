@@ -1,0 +1,90 @@
+/**
+ * @class   vtkOpenGLPathFeatureMapper
+ * @brief   draws path-based surface detail (grooves, engravings, cracks, ridges) on any mesh
+ *          with normals and texture coordinates
+ *
+ * The path-feature paper (seed 004): features are paths in texture space swept by
+ * profiles, held as vectors (vtkPathFeatureTextureFilter's grid and data textures) rather
+ * than as a height map, so they stay sharp at every distance and cost kilobytes. Each
+ * fragment walks its view ray through the grid and finds, by CSG over the features of
+ * each cell it reaches, where the ray first enters matter (vtkReliefPathSearch.glsl): cuts
+ * below the base surface, additions above it, overhangs, crossings, revolved ends. The
+ * hit is lit with the facet's normal and the feature's material (or the actor's
+ * property), shadowed by a second walk toward each light, and its true depth written,
+ * so other actors and shadow maps meet the grooves where they are.
+ *
+ * Port 0 takes the mesh (point texture coordinates required; normals and tangents
+ * computed when missing): the tangent frame of vtkOpenGLReliefMapper, whose settings
+ * (DepthScale, SelfShadowing, FootprintShading, DepthCorrection, DisplayMode,
+ * TwoSidedRelief) apply as there. The paths go to SetPathsConnection() or SetPathsData(),
+ * the profiles, optionally, to SetProfilesConnection() or SetProfilesData(): see
+ * vtkPathFeatureTextureFilter for the data, and GetPathFeatureTextureFilter() for its
+ * settings and materials. The base surface lies GetBaseDepth() x DepthScale below the
+ * polygons, so that what protrudes reaches them. Without paths the plain surface is drawn.
+ * The search method of the superclass does not apply: the path search is the only one.
+ */
+#ifndef vtkOpenGLPathFeatureMapper_h
+#define vtkOpenGLPathFeatureMapper_h
+
+#include "vtkNew.h"           // For PathFeatureTextureFilter
+#include "vtkTextureObject.h" // For vtkNew
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkReliefRenderingModule.h" // For export macro
+
+class vtkOpenGLRenderWindow;
+class vtkPathFeatureTextureFilter;
+
+
+class VTKRELIEFRENDERING_EXPORT vtkOpenGLPathFeatureMapper : public vtkOpenGLReliefMapper
+{
+public:
+  static vtkOpenGLPathFeatureMapper* New();
+  vtkTypeMacro(vtkOpenGLPathFeatureMapper, vtkOpenGLReliefMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The paths and the profiles (see vtkPathFeatureTextureFilter).
+  void SetPathsConnection(vtkAlgorithmOutput* output);
+  void SetPathsData(vtkPolyData* paths);
+  void SetProfilesConnection(vtkAlgorithmOutput* output);
+  void SetProfilesData(vtkPolyData* profiles);
+  ///@}
+
+  /// The filter that makes the textures: its grid resolution, default width, materials.
+  vtkPathFeatureTextureFilter* GetPathFeatureTextureFilter();
+
+  /// The depth of the base surface below the polygons, in units of DepthScale, as drawn.
+  double GetBaseDepth();
+
+  /// GPU memory of the grid and data textures, as last uploaded.
+  vtkIdType GetTextureBytes() override;
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkOpenGLPathFeatureMapper();
+  ~vtkOpenGLPathFeatureMapper() override;
+
+  bool UpdateReliefTexture(vtkRenderer* ren) override;
+  void UpdateAcceleration(vtkRenderer*) override {}
+  void ActivateReliefTextures(bool activate) override;
+  void SetReliefTextureParameters(vtkShaderProgram* program) override;
+  std::string GetSearchDefines() override;
+  std::string GetSearchSource() override;
+  std::string GetHitColourCode() override;
+  /// Uploads `image`'s four float components to `texture` in the window's context.
+  bool Upload(vtkTextureObject* texture, vtkImageData* image, vtkOpenGLRenderWindow* window);
+
+  vtkNew<vtkPathFeatureTextureFilter> PathFeatureTextureFilter;
+  vtkNew<vtkTextureObject> GridTexture;
+  vtkNew<vtkTextureObject> DataTexture;
+  vtkMTimeType UploadedTime = 0; // of the filter's outputs
+  vtkOpenGLRenderWindow* UploadedWindow = nullptr; // compared by address only
+  int DataWidth = 1;
+
+private:
+  vtkOpenGLPathFeatureMapper(const vtkOpenGLPathFeatureMapper&) = delete;
+  void operator=(const vtkOpenGLPathFeatureMapper&) = delete;
+};
+
+#endif
