@@ -9,10 +9,12 @@
 // exact by the unit tests.
 //
 // Every method of vtkReliefSearchMethod is compared: the mirror's search of the method's
-// GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it. No
-// baseline image:
+// GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it; and
+// vtkOpenGLPathFeatureMapper's path walk, on its filter's textures. No baseline image:
 // the depth buffer is checked against the mirror, not against a picture.
 #include "ReliefMirrorMaps.h"
+#include "ReliefPathFixtures.h"
+#include "ReliefPathScene.h"
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -22,7 +24,9 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkOpenGLPathFeatureMapper.h"
 #include "vtkOpenGLReliefMapper.h"
+#include "vtkPathFeatureTextureFilter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkReliefSearchMethod.h"
@@ -274,13 +278,12 @@ double ReliefDepthAt(const View& view, const Fragment& fragment, double x, doubl
   return glm::dot(offset, viewRay) * descent / depthScale;
 }
 
-Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLReliefMapper* mapper,
-  const View& view, const mirror::ReliefTangentVertex& vertex, const Maps& maps,
-  const std::vector<float>& zbuffer)
+// At sampled pixels, the GPU's depth against `search` on the CPU; `size`: the cells per
+// tile that agreement is measured in (texels, or the path grid's cells).
+Comparison Compare(double tiles, const std::string& method, mirror::Search search,
+  glm::vec2 size, vtkOpenGLReliefMapper* mapper, const View& view,
+  const mirror::ReliefTangentVertex& vertex, const std::vector<float>& zbuffer)
 {
-  const mirror::Search search =
-    mirror::FindSearch(vtkReliefSearchMethod::Find(method)->Function);
-  const glm::vec2 size(float(maps.Field.Width), float(maps.Field.Height));
   const float depthScale = static_cast<float>(mapper->GetDepthScale()); // a float uniform
   Comparison result;
   for (int j = Stride / 2; j < Height; j += Stride)
@@ -289,7 +292,7 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
     {
       Fragment fragment;
       const float z = zbuffer[static_cast<size_t>(j) * Width + i];
-      if (!FragmentAt(view, scene.Tiles, i, j, fragment) || z >= 1.0f)
+      if (!FragmentAt(view, tiles, i, j, fragment) || z >= 1.0f)
       {
         continue;
       }
@@ -310,8 +313,8 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
         // the entry's change to the next pixels: the Automatic search's budget
         Fragment alongX;
         Fragment alongY;
-        if (!FragmentAt(view, scene.Tiles, i + 1, j, alongX) ||
-          !FragmentAt(view, scene.Tiles, i, j + 1, alongY))
+        if (!FragmentAt(view, tiles, i + 1, j, alongX) ||
+          !FragmentAt(view, tiles, i, j + 1, alongY))
         {
           continue;
         }
@@ -355,6 +358,54 @@ Comparison Compare(const Scene& scene, const std::string& method, vtkOpenGLRelie
   }
   return result;
 }
+}
+
+// Prints a comparison; false, with an error, where too few pixels agree.
+bool Report(const char* scene, const std::string& method, const Comparison& result)
+{
+  const double share = result.Compared ? double(result.Agreeing) / result.Compared : 0.0;
+  std::cout << "  " << std::setw(14) << std::left << method << std::right
+            << " pixels compared " << result.Compared << ", agreeing " << std::fixed
+            << std::setprecision(1) << 100.0 * share << "%, worst " << std::scientific
+            << std::setprecision(2) << result.WorstTexels << " cell, " << result.WorstDepth
+            << " depth, " << result.WorstWindowDepth << " window depth (24-bit step "
+            << result.WorstQuantum << " depth)\n"
+            << std::defaultfloat;
+  if (result.Compared < MinimumCompared || share < RequiredShare)
+  {
+    std::cerr << "ERROR: the GPU's " << method << " hits on " << scene
+              << " do not match the CPU mirror's: " << result.Agreeing << " of "
+              << result.Compared << " within " << AgreeTexels << " cell and depth\n";
+    return false;
+  }
+  return true;
+}
+
+// The path-feature mapper's walk (vtkReliefPathSearch.glsl) on the showcase's paths, tiled
+// twice, against the mirror's, on the filter's own textures.
+bool ComparePathFeatures(vtkRenderWindow* window, vtkRenderer* renderer, const View& view,
+  std::vector<float>& zbuffer)
+{
+  constexpr double Tiles = 2.0;
+  vtkSmartPointer<vtkOpenGLPathFeatureMapper> mapper =
+    ReliefPathScene::ShowcaseMapper(ReliefScene::Square(Tiles), 0.03);
+  mapper->SetSelfShadowing(false);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->RemoveAllViewProps();
+  renderer->AddActor(actor);
+  window->Render();
+  window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
+  const mirror::PathTextures textures =
+    ReliefPathFixtures::Textures(mapper->GetPathFeatureTextureFilter());
+  mirror::CurrentPaths = &textures;
+  const int* cells = mapper->GetPathFeatureTextureFilter()->GetResolutionUsed();
+  std::cout << "path features:\n";
+  const Comparison result = Compare(Tiles, "PathFeatures", &mirror::reliefSearchPathFeatures,
+    glm::vec2(float(cells[0]), float(cells[1])), mapper, view,
+    SquareBasis(view, mapper->GetReliefSurface()), zbuffer);
+  renderer->RemoveAllViewProps();
+  return Report("the path-feature showcase", "PathFeatures", result);
 }
 
 int TestReliefGpuMatchesCpu(int, char*[])
@@ -413,23 +464,13 @@ int TestReliefGpuMatchesCpu(int, char*[])
       window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
       PrepareMaps(method, mapper, maps);
       const mirror::ReliefTangentVertex vertex = SquareBasis(view, mapper->GetReliefSurface());
-      const Comparison result = Compare(scene, method, mapper, view, vertex, maps, zbuffer);
-      const double share = result.Compared ? double(result.Agreeing) / result.Compared : 0.0;
-      std::cout << "  " << std::setw(14) << std::left << method << std::right
-                << " pixels compared " << result.Compared << ", agreeing " << std::fixed
-                << std::setprecision(1) << 100.0 * share << "%, worst " << std::scientific
-                << std::setprecision(2) << result.WorstTexels << " texel, " << result.WorstDepth
-                << " depth, " << result.WorstWindowDepth << " window depth (24-bit step "
-                << result.WorstQuantum << " depth)\n"
-                << std::defaultfloat;
-      if (result.Compared < MinimumCompared || share < RequiredShare)
-      {
-        std::cerr << "ERROR: the GPU's " << method << " hits on " << scene.Name
-                  << " do not match the CPU mirror's: " << result.Agreeing << " of "
-                  << result.Compared << " within " << AgreeTexels << " texel and depth\n";
-        ++failures;
-      }
+      const Comparison result = Compare(scene.Tiles, method,
+        mirror::FindSearch(vtkReliefSearchMethod::Get(id)->Function),
+        glm::vec2(float(maps.Field.Width), float(maps.Field.Height)), mapper, view, vertex,
+        zbuffer);
+      failures += Report(scene.Name, method, result) ? 0 : 1;
     }
   }
+  failures += ComparePathFeatures(window, renderer, view, zbuffer) ? 0 : 1;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,120 @@
+"""vtkOpenGLPathFeatureMapper from Python, in a VTK pipeline: a circle from
+vtkRegularPolygonSource is the path of a groove on a plane; the groove lies where the
+source says, follows the source when it changes, and takes its material's colour.
+
+Run by ctest as: TestReliefPathFeaturesPython.py -D <Data dir> -T <temp dir>,
+with VTK's /usr/bin/python3 and PYTHONPATH set to the built vtkrelief package.
+"""
+import argparse
+import sys
+import unittest
+
+import numpy
+
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkRegularPolygonSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
+                                         vtkWindowToImageFilter)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
+
+from vtkrelief import vtkOpenGLPathFeatureMapper
+
+parser = argparse.ArgumentParser()
+parser.add_argument("-D", dest="data", required=True)
+parser.add_argument("-T", dest="temporary", required=True)
+ARGUMENTS, _ = parser.parse_known_args()
+
+SIZE = 200
+
+
+def circle_paths(radius):
+    """A circle around the texture's centre, as a polyline in (u, v)."""
+    circle = vtkRegularPolygonSource()
+    circle.SetCenter(0.5, 0.5, 0.0)
+    circle.SetRadius(radius)
+    circle.SetNumberOfSides(96)
+    circle.GeneratePolygonOff()
+    circle.GeneratePolylineOn()
+    return circle
+
+
+class PathFeaturesInAPipeline(unittest.TestCase):
+    def setUp(self):
+        # the unit square seen from straight above, texture coordinates (x, y)
+        self.plane = vtkPlaneSource()
+        self.plane.SetOrigin(0, 0, 0)
+        self.plane.SetPoint1(1, 0, 0)
+        self.plane.SetPoint2(0, 1, 0)
+        self.circle = circle_paths(0.3)
+        self.mapper = vtkOpenGLPathFeatureMapper()
+        self.mapper.SetInputConnection(self.plane.GetOutputPort())
+        self.mapper.SetPathsConnection(self.circle.GetOutputPort())
+        self.mapper.SetDepthScale(0.05)
+        self.mapper.GetPathFeatureTextureFilter().SetDefaultWidth(0.06)
+        actor = vtkActor()
+        actor.SetMapper(self.mapper)
+        actor.GetProperty().SetColor(0.8, 0.8, 0.8)
+        self.renderer = vtkRenderer()
+        self.renderer.AddActor(actor)
+        self.window = vtkRenderWindow()
+        self.window.SetOffScreenRendering(1)
+        self.window.SetSize(SIZE, SIZE)
+        self.window.SetMultiSamples(0)
+        self.window.AddRenderer(self.renderer)
+        camera = self.renderer.GetActiveCamera()
+        camera.ParallelProjectionOn()
+        camera.SetFocalPoint(0.5, 0.5, 0)
+        camera.SetPosition(0.5, 0.5, 2)
+        camera.SetParallelScale(0.5)
+        self.renderer.ResetCameraClippingRange(-0.2, 1.2, -0.2, 1.2, -0.2, 0.2)
+
+    def tearDown(self):
+        self.window.Finalize()
+
+    def depths(self):
+        self.window.Render()
+        values = vtkFloatArray()
+        self.window.GetZbufferData(0, 0, SIZE - 1, SIZE - 1, values)
+        return vtk_to_numpy(values).reshape(SIZE, SIZE)
+
+    def groove_radius(self, depths):
+        """Where along the row through the centre the surface is deepest, from it."""
+        row = depths[SIZE // 2, SIZE // 2:]
+        return (numpy.argmax(row) + 0.5) / SIZE
+
+    def test_groove_follows_its_source(self):
+        depths = self.depths()
+        plain = depths[5, 5]
+        self.assertAlmostEqual(self.groove_radius(depths), 0.3, delta=1.5 / SIZE)
+        self.assertGreater(depths.max(), plain)  # cut in: farther from the camera
+        self.circle.SetRadius(0.15)
+        self.assertAlmostEqual(self.groove_radius(self.depths()), 0.15, delta=1.5 / SIZE)
+        self.assertGreater(self.mapper.GetTextureBytes(), 0)
+        self.assertLess(self.mapper.GetTextureBytes(), 64 * 1024)
+
+    def test_material_colours_the_groove(self):
+        self.circle.Update()
+        circle = self.circle.GetOutput()
+        material = vtkIntArray()
+        material.SetName("Material")
+        material.InsertNextValue(0)
+        circle.GetCellData().AddArray(material)
+        features = self.mapper.GetPathFeatureTextureFilter()
+        self.assertEqual(features.AddMaterial(0.9, 0.1, 0.1, 0.0, 1.0), 0)
+        self.mapper.SetPathsData(circle)
+        self.window.Render()
+        capture = vtkWindowToImageFilter()
+        capture.SetInput(self.window)
+        capture.ReadFrontBufferOff()
+        capture.Update()
+        pixels = vtk_to_numpy(capture.GetOutput().GetPointData().GetScalars())
+        pixels = pixels.reshape(SIZE, SIZE, -1)
+        groove = pixels[SIZE // 2, int(0.8 * SIZE)]  # (u 0.8, v 0.5): on the circle
+        plain = pixels[5, 5]
+        self.assertGreater(int(groove[0]), 2 * int(groove[1]))  # red
+        self.assertLess(abs(int(plain[0]) - int(plain[1])), 8)  # the actor's grey
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0]])

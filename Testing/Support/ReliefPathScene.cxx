@@ -1,0 +1,207 @@
+#include "ReliefPathScene.h"
+
+#include "ReliefScene.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkOpenGLPathFeatureMapper.h"
+#include "vtkPathFeatureTextureFilter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using Point = std::pair<double, double>;
+
+// Paths under construction: their points and per-path attributes.
+class PathBuilder
+{
+public:
+  PathBuilder()
+  {
+    this->Widths->SetName("Width");
+    this->Profiles->SetName("Profile");
+    this->Materials->SetName("Material");
+    this->Priorities->SetName("Priority");
+    this->Perturbations->SetName("Perturbation");
+    this->Perturbations->SetNumberOfComponents(2);
+    this->Controls->SetName("ControlPoint");
+  }
+
+  // a path through `points`, those flagged in `controls` quadratic control points
+  void Add(const std::vector<Point>& points, double width, int profile, int material,
+    int priority = 0, double scaleStart = 1.0, double scaleEnd = 1.0,
+    const std::vector<bool>& controls = {})
+  {
+    this->Lines->InsertNextCell(static_cast<int>(points.size()));
+    for (size_t k = 0; k < points.size(); ++k)
+    {
+      this->Lines->InsertCellPoint(
+        this->Points->InsertNextPoint(points[k].first, points[k].second, 0.0));
+      this->Controls->InsertNextValue(k < controls.size() && controls[k] ? 1 : 0);
+    }
+    this->Widths->InsertNextValue(width);
+    this->Profiles->InsertNextValue(profile);
+    this->Materials->InsertNextValue(material);
+    this->Priorities->InsertNextValue(priority);
+    this->Perturbations->InsertNextTuple2(scaleStart, scaleEnd);
+  }
+
+  vtkSmartPointer<vtkPolyData> Make()
+  {
+    auto paths = vtkSmartPointer<vtkPolyData>::New();
+    paths->SetPoints(this->Points);
+    paths->SetLines(this->Lines);
+    paths->GetPointData()->AddArray(this->Controls);
+    paths->GetCellData()->AddArray(this->Widths);
+    paths->GetCellData()->AddArray(this->Profiles);
+    paths->GetCellData()->AddArray(this->Materials);
+    paths->GetCellData()->AddArray(this->Priorities);
+    paths->GetCellData()->AddArray(this->Perturbations);
+    return paths;
+  }
+
+private:
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkIntArray> Controls;
+  vtkNew<vtkDoubleArray> Widths;
+  vtkNew<vtkIntArray> Profiles;
+  vtkNew<vtkIntArray> Materials;
+  vtkNew<vtkIntArray> Priorities;
+  vtkNew<vtkDoubleArray> Perturbations;
+};
+
+void AddProfile(vtkPoints* points, vtkCellArray* lines, const std::vector<Point>& profile)
+{
+  lines->InsertNextCell(static_cast<int>(profile.size()));
+  for (const Point& point : profile)
+  {
+    lines->InsertCellPoint(points->InsertNextPoint(point.first, point.second, 0.0));
+  }
+}
+}
+
+namespace ReliefPathScene
+{
+vtkSmartPointer<vtkPolyData> Profiles()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  std::vector<Point> round;
+  std::vector<Point> bead;
+  for (int k = 0; k <= 12; ++k)
+  {
+    const double angle = M_PI * k / 12;
+    round.emplace_back(-std::cos(angle), std::sin(angle));
+    bead.emplace_back(-std::cos(angle), -0.5 * std::sin(angle));
+  }
+  AddProfile(points, lines, round);
+  AddProfile(points, lines, { { -1.0, 0.0 }, { 0.0, 1.0 }, { 1.0, 0.0 } });
+  AddProfile(points, lines,
+    { { -1.0, 0.0 }, { -0.8, 0.2 }, { -0.55, 0.25 }, { 0.55, 0.25 }, { 0.8, 0.2 }, { 1.0, 0.0 } });
+  AddProfile(points, lines, bead);
+  AddProfile(points, lines, { { -0.5, 0.0 }, { -0.5, 0.15 }, { -1.0, 0.8 }, { 1.0, 0.8 },
+                              { 0.5, 0.15 }, { 0.5, 0.0 } });
+  auto profiles = vtkSmartPointer<vtkPolyData>::New();
+  profiles->SetPoints(points);
+  profiles->SetLines(lines);
+  return profiles;
+}
+
+int AddMaterials(vtkPathFeatureTextureFilter* filter)
+{
+  const int mortar = filter->AddMaterial(0.62, 0.6, 0.56, 0.05, 5.0);
+  filter->AddMaterial(0.25, 0.22, 0.2, 0.0, 1.0);  // the crack's dark inside
+  filter->AddMaterial(0.75, 0.75, 0.78, 0.8, 40.0); // the bead's metal
+  return mortar;
+}
+
+vtkSmartPointer<vtkPolyData> ShowcasePaths(int firstMaterial)
+{
+  const int mortar = firstMaterial;
+  const int crack = firstMaterial + 1;
+  const int metal = firstMaterial + 2;
+  PathBuilder paths;
+  // bricks on u in [0, 0.5]: bed joints every 1/8 of v, continuous (priority 1); head
+  // joints between them, staggered, ending on the bed joints
+  constexpr int Courses = 8;
+  for (int row = 0; row <= Courses; ++row)
+  {
+    const double v = static_cast<double>(row) / Courses;
+    paths.Add({ { 0.0, v }, { 0.5, v } }, 0.022, MORTAR, mortar, 1);
+  }
+  for (int row = 0; row < Courses; ++row)
+  {
+    const double low = static_cast<double>(row) / Courses;
+    const double high = static_cast<double>(row + 1) / Courses;
+    for (double u = row % 2 == 0 ? 0.125 : 0.0; u < 0.5; u += 0.25)
+    {
+      paths.Add({ { u, low }, { u, high } }, 0.018, MORTAR, mortar);
+    }
+  }
+  // a crack across bricks and joints, narrowing to nothing, and a branch
+  paths.Add({ { 0.06, 0.57 }, { 0.14, 0.55 }, { 0.2, 0.61 }, { 0.29, 0.59 }, { 0.36, 0.66 },
+              { 0.44, 0.64 } },
+    0.012, VEE, crack, 2, 1.0, 0.0);
+  paths.Add({ { 0.2, 0.61 }, { 0.23, 0.7 }, { 0.21, 0.78 } }, 0.008, VEE, crack, 2, 1.0, 0.0);
+  // on u in [0.5, 1]: a weld bead, a dovetail slot it crosses, an engraved ring
+  paths.Add({ { 0.62, 0.06 }, { 0.64, 0.5 }, { 0.62, 0.94 } }, 0.05, BEAD, metal);
+  paths.Add({ { 0.55, 0.25 }, { 0.97, 0.25 } }, 0.06, DOVETAIL, -1);
+  const double cx = 0.8;
+  const double cy = 0.68;
+  const double r = 0.13;
+  // four quadratic arcs: on-curve points at the axes, control points at the corners
+  // (a circle within 1%, as TrueType draws them)
+  std::vector<Point> ring;
+  std::vector<bool> controls;
+  for (int k = 0; k <= 8; ++k)
+  {
+    const double angle = M_PI / 4 * k;
+    const double radius = k % 2 == 0 ? r : r * std::sqrt(2.0);
+    ring.emplace_back(cx + radius * std::cos(angle), cy + radius * std::sin(angle));
+    controls.push_back(k % 2 == 1);
+  }
+  paths.Add(ring, 0.02, ROUND, -1, 0, 1.0, 1.0, controls);
+  return paths.Make();
+}
+
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowcaseMapper(vtkPolyData* surface, double depthScale)
+{
+  auto mapper = vtkSmartPointer<vtkOpenGLPathFeatureMapper>::New();
+  mapper->SetInputData(surface);
+  const int first = AddMaterials(mapper->GetPathFeatureTextureFilter());
+  mapper->SetPathsData(ShowcasePaths(first));
+  mapper->SetProfilesData(Profiles());
+  mapper->SetDepthScale(depthScale);
+  return mapper;
+}
+
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeatures(
+  vtkRenderWindow* window, int width, int height, double angle)
+{
+  auto renderer = ReliefScene::LitRenderer(window, width, height);
+  auto mapper = ShowcaseMapper(ReliefScene::Square(1.0), 0.02);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.66, 0.33, 0.24);
+  actor->GetProperty()->SetSpecular(0.1);
+  actor->GetProperty()->SetSpecularPower(10.0);
+  actor->GetProperty()->SetAmbient(0.2); // what shadows hold stays readable
+  renderer->AddActor(actor);
+  ReliefScene::ViewSquare(renderer, angle);
+  return mapper;
+}
+}

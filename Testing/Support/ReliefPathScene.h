@@ -1,0 +1,47 @@
+// Path-feature scenes (the path-feature paper, seed 004) shared by the demo, the
+// regression tests and the benchmark: profiles, a brick wall's mortar with a crack, a
+// protruding weld bead, an overhanging dovetail slot and an engraved ring of quadratic
+// arcs, on a square or a cylinder.
+#ifndef ReliefPathScene_h
+#define ReliefPathScene_h
+
+#include "vtkSmartPointer.h"
+
+class vtkOpenGLPathFeatureMapper;
+class vtkPathFeatureTextureFilter;
+class vtkPolyData;
+class vtkRenderWindow;
+
+namespace ReliefPathScene
+{
+/// The profiles of Profiles(), by index.
+enum Profile
+{
+  ROUND = 0,    // a half circle, 1 deep
+  VEE = 1,      // a V, 1 deep
+  MORTAR = 2,   // a flat-bottomed joint, 0.35 deep
+  BEAD = 3,     // a weld bead, protruding 0.5
+  DOVETAIL = 4  // a slot wider below than at its opening, 0.8 deep
+};
+vtkSmartPointer<vtkPolyData> Profiles();
+
+/// Adds the showcase's materials to `filter` (mortar, crack, bead) and returns the first.
+int AddMaterials(vtkPathFeatureTextureFilter* filter);
+
+/**
+ * The showcase's paths in one texture tile: on its left half a wall of bricks, whose
+ * joints end on the bed joints (intersected ends, priorities) and which a crack that
+ * narrows to nothing crosses; on its right half a weld bead, a dovetail slot and an
+ * engraved ring of quadratic arcs. Material indices from `firstMaterial`.
+ */
+vtkSmartPointer<vtkPolyData> ShowcasePaths(int firstMaterial);
+
+/// A path-feature mapper of `surface` with the showcase's paths, profiles and materials.
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowcaseMapper(vtkPolyData* surface, double depthScale);
+
+/// The showcase on a unit square seen `angle` degrees from its normal.
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeatures(
+  vtkRenderWindow* window, int width, int height, double angle);
+}
+
+#endif
