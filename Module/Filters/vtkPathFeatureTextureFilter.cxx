@@ -433,6 +433,7 @@ std::vector<Segment> ReadSegments(vtkPolyData* input, vtkIdType size, const vtkI
 {
   std::vector<dvec2> points;
   std::vector<bool> isControl;
+  vtkIdType repeated = 0;
   for (vtkIdType k = 0; k < size; ++k)
   {
     double point[3];
@@ -444,7 +445,7 @@ std::vector<Segment> ReadSegments(vtkPolyData* input, vtkIdType size, const vtkI
     }
     if (!points.empty() && uv == points.back())
     {
-      report.ZeroLengthSegments += 1;
+      repeated += 1;
       continue;
     }
     points.push_back(uv);
@@ -453,8 +454,9 @@ std::vector<Segment> ReadSegments(vtkPolyData* input, vtkIdType size, const vtkI
   std::vector<Segment> segments;
   if (points.size() < 2)
   {
-    return segments;
+    return segments; // the whole path is reported instead
   }
+  report.ZeroLengthSegments += repeated;
   // a path starts and ends on itself
   isControl.front() = false;
   isControl.back() = false;
@@ -649,11 +651,17 @@ void vtkPathFeatureTextureFilter::ReportPaths()
     vtkWarningMacro(<< report.WideWidths
                     << " path(s) wider than a texture tile are drawn one tile wide.");
   }
-  if (report.ZeroLengthSegments > 0 || report.DegeneratePaths > 0)
+  if (report.ZeroLengthSegments > 0)
   {
-    vtkWarningMacro(<< report.ZeroLengthSegments << " zero-length segment(s) and "
-                    << report.DegeneratePaths
-                    << " path(s) of fewer than two distinct points are left out.");
+    vtkWarningMacro(<< report.ZeroLengthSegments
+                    << " zero-length segment(s) (a point repeated) are left out, the rest of "
+                       "their paths drawn. Remove repeated points.");
+  }
+  if (report.DegeneratePaths > 0)
+  {
+    vtkWarningMacro(<< report.DegeneratePaths
+                    << " path(s) of fewer than two distinct points are left out: a path "
+                       "needs a length.");
   }
   if (report.UnknownProfiles > 0)
   {
