@@ -1,6 +1,7 @@
 // ./relief demo: renders vtkRelief's built-in showcase into a folder and prints each
 // image's median milliseconds per frame. Meshes come from VTK sources, height maps and
 // colour textures from the project's Data/ folder: nothing is downloaded.
+#include "ReliefPathScene.h"
 #include "ReliefScene.h"
 
 #include "vtkImageData.h"
@@ -118,6 +119,14 @@ int main(int argc, char* argv[])
       "thin features: Linear, LinearBinary, Secant, ExactDDA, SafetyRadius, ConeStep, "
       "MaximumMipmap, Automatic at 45 (top) and 80 degrees",
       [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1600, 400); } },
+    { "path_features",
+      "vector detail (vtkOpenGLPathFeatureMapper): mortar joints meeting at ends, a crack "
+      "narrowing to nothing, a weld bead cut by a dovetail slot, a ring of quadratic arcs",
+      [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeatures(w, 640, 480, 50.0); } },
+    { "path_features_closeup", "the same close up and low: the slot's overhang, the bead",
+      [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeaturesCloseUp(w, 640, 480); } },
+    { "engraved_cylinder", "a label engraved with a V-bit on a cylinder of 48 x 8 quads",
+      [](vtkRenderWindow* w) { ReliefPathScene::ShowEngravedCylinder(w, 640, 480); } },
     { "sample_count",
       "height samples per pixel, Automatic (the default), the view ray's search (blue 0, red 20)",
       [](vtkRenderWindow* w) {

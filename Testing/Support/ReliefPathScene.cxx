@@ -3,9 +3,12 @@
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkPlaneSource.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPathFeatureMapper.h"
@@ -16,6 +19,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 
 #include <cmath>
 #include <utility>
@@ -202,6 +206,98 @@ vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeatures(
   actor->GetProperty()->SetAmbient(0.2); // what shadows hold stays readable
   renderer->AddActor(actor);
   ReliefScene::ViewSquare(renderer, angle);
+  return mapper;
+}
+
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeaturesCloseUp(
+  vtkRenderWindow* window, int width, int height)
+{
+  auto mapper = ShowPathFeatures(window, width, height, 0.0);
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  // low across the slot, whose lips hide its undercut, toward the bead and the ring
+  camera->SetFocalPoint(0.2, -0.2, 0.0);
+  camera->SetPosition(0.28, -0.62, 0.1);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(40.0);
+  renderer->ResetCameraClippingRange();
+  return mapper;
+}
+
+vtkSmartPointer<vtkPolyData> LabelCylinder()
+{
+  constexpr double Radius = 0.4;
+  constexpr double Height = 1.0;
+  const double circumference = 2.0 * M_PI * Radius;
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(48, 8);
+  plane->Update();
+  auto cylinder = vtkSmartPointer<vtkPolyData>::New();
+  cylinder->DeepCopy(plane->GetOutput());
+  ReliefScene::TileTextureCoordinates(cylinder, 1.0, Height / circumference);
+  vtkPoints* points = cylinder->GetPoints();
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    const double* flat = points->GetPoint(p); // in [-0.5, 0.5]^2
+    const double angle = 2.0 * M_PI * (flat[0] + 0.5);
+    points->SetPoint(p, Radius * std::cos(angle), Radius * std::sin(angle), Height * flat[1]);
+  }
+  cylinder->GetPointData()->SetNormals(nullptr);
+  return cylinder;
+}
+
+vtkSmartPointer<vtkPolyData> LabelPaths()
+{
+  PathBuilder paths;
+  // letters 0.08 high (0.2 in the world), strokes 0.008 wide, around (0.5, 0.2)
+  const double x0 = 0.44;
+  const double y0 = 0.16;
+  const double h = 0.08;
+  auto at = [&](double x, double y) { return Point(x0 + x * h, y0 + y * h); };
+  constexpr double Stroke = 0.008;
+  paths.Add({ at(0.0, 1.0), at(0.3, 0.0), at(0.6, 1.0) }, Stroke, VEE, -1);      // V
+  paths.Add({ at(0.75, 1.0), at(1.35, 1.0) }, Stroke, VEE, -1);                  // T
+  paths.Add({ at(1.05, 1.0), at(1.05, 0.0) }, Stroke, VEE, -1);
+  paths.Add({ at(1.5, 1.0), at(1.5, 0.0) }, Stroke, VEE, -1);                    // K
+  paths.Add({ at(2.05, 1.0), at(1.5, 0.4), at(2.05, 0.0) }, Stroke, VEE, -1);
+  // the frame: straight sides, quadratic corners (control points at the box's corners)
+  const double left = x0 - 0.02;
+  const double right = x0 + 2.05 * h + 0.02;
+  const double bottom = y0 - 0.02;
+  const double top = y0 + h + 0.02;
+  const double r = 0.015;
+  paths.Add({ { left + r, bottom }, { right - r, bottom }, { right, bottom },
+              { right, bottom + r }, { right, top - r }, { right, top }, { right - r, top },
+              { left + r, top }, { left, top }, { left, top - r }, { left, bottom + r },
+              { left, bottom }, { left + r, bottom } },
+    0.006, ROUND, -1, 0, 1.0, 1.0,
+    { false, false, true, false, false, true, false, false, true, false, false, true, false });
+  return paths.Make();
+}
+
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowEngravedCylinder(
+  vtkRenderWindow* window, int width, int height)
+{
+  auto renderer = ReliefScene::LitRenderer(window, width, height);
+  auto mapper = vtkSmartPointer<vtkOpenGLPathFeatureMapper>::New();
+  mapper->SetInputData(LabelCylinder());
+  mapper->SetPathsData(LabelPaths());
+  mapper->SetProfilesData(Profiles());
+  mapper->SetDepthScale(0.012);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.72, 0.74, 0.78);
+  actor->GetProperty()->SetSpecular(0.5);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  actor->GetProperty()->SetAmbient(0.2);
+  renderer->AddActor(actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  // u = 0.5 faces -x
+  camera->SetFocalPoint(-0.4, 0.0, -0.0);
+  camera->SetPosition(-1.6, -0.5, 0.35);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(26.0);
+  renderer->ResetCameraClippingRange();
   return mapper;
 }
 }

@@ -42,6 +42,23 @@ vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowcaseMapper(vtkPolyData* surface,
 /// The showcase on a unit square seen `angle` degrees from its normal.
 vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeatures(
   vtkRenderWindow* window, int width, int height, double angle);
+
+/// The showcase's right half close up and low: the bead, the dovetail's overhang, the ring.
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeaturesCloseUp(
+  vtkRenderWindow* window, int width, int height);
+
+/**
+ * A cylinder of radius 0.4 and height 1 whose texture coordinates are isotropic in the
+ * world (u once around, v up to its height over its circumference), 48 x 8 quads.
+ */
+vtkSmartPointer<vtkPolyData> LabelCylinder();
+
+/// "VTK" engraved with a V-bit in a frame with rounded (quadratic) corners, on u = 0.5.
+vtkSmartPointer<vtkPolyData> LabelPaths();
+
+/// The label on the cylinder, the side it is on turned to the camera.
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowEngravedCylinder(
+  vtkRenderWindow* window, int width, int height);
 }
 
 #endif

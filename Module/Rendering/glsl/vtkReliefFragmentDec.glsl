@@ -243,6 +243,11 @@ vec3 reliefShadeFootprint(
 #ifdef RELIEF_INPUT_NORMALS
   searched = 0.0;
 #endif
+#ifdef RELIEF_PATH_FEATURES
+  // path features have sharp edges at every scale: wherever the ray met features, the
+  // pixel is supersampled (the path-feature paper, s5.7), its normals and materials mixed
+  searched = reliefFootprintShading == 1 && reliefPathNearFeatures ? 1.0 : searched;
+#endif
   if (searched < 1.0)
   {
     reliefAddFootprintNormal(centre, 1.0 - searched);

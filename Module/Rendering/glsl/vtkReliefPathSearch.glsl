@@ -30,6 +30,7 @@
 
 vec3 reliefPathHitNormal;
 float reliefPathHitMaterial;
+bool reliefPathNearFeatures; // the last walk met a cell that lists features
 
 // One element, placed in the copy of the tile the walk is in.
 struct ReliefPathElement
@@ -251,6 +252,14 @@ bool reliefPathOnFacet(ReliefPathElement element, ReliefRay ray, float t, float 
 ReliefPathEvent reliefPathFacetEvents(ReliefPathEvent best, ReliefPathElement element,
   ReliefRay ray, float base, vec2 p0, vec2 p1, float after)
 {
+  // the parts of the element the ray passes between `after` and the best crossing yet
+  vec2 start = vec2(ray.origin.x, ray.origin.y) - element.start;
+  float alongAfter = dot(start, element.axis) +
+    after * (ray.direction.x * element.axis.x + ray.direction.y * element.axis.y);
+  float alongBest = dot(start, element.axis) +
+    best.t * (ray.direction.x * element.axis.x + ray.direction.y * element.axis.y);
+  float alongLow = min(alongAfter, alongBest);
+  float alongHigh = max(alongAfter, alongBest);
   vec2 facet = p1 - p0;
   if (dot(facet, facet) == 0.0f)
   {
@@ -276,7 +285,7 @@ ReliefPathEvent reliefPathFacetEvents(ReliefPathEvent best, ReliefPathElement el
     -facet.y / w * element.right.x + (p0.x * facet.y - p0.y * facet.x) * slope * element.axis.x,
     -facet.y / w * element.right.y + (p0.x * facet.y - p0.y * facet.x) * slope * element.axis.y,
     facet.x);
-  if (c1 != 0.0f)
+  if (c1 != 0.0f && alongHigh >= 0.0f && alongLow <= element.span)
   {
     float t = -c0 / c1;
     if (t > after && t < best.t && reliefPathOnFacet(element, ray, t, base, p0, p1, 0.0f))
@@ -287,6 +296,10 @@ ReliefPathEvent reliefPathFacetEvents(ReliefPathEvent best, ReliefPathElement el
   // the revolved ends: r^2 = (w s x)^2, x = x0 + fx (Y / s - y0) / fy along the facet
   for (int end = -1; end <= 1; end += 2)
   {
+    if ((end < 0 && alongLow >= 0.0f) || (end > 0 && alongHigh <= element.span))
+    {
+      continue; // the ray stays beside the element's straight part
+    }
     vec2 centre = end < 0 ? element.start : element.end;
     float scale = end < 0 ? element.scaleStart : element.scaleEnd;
     vec2 q0 = vec2(ray.origin.x, ray.origin.y) - centre;
@@ -440,6 +453,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   float tHit = -1.0f;
   vec3 normal = vec3(0.0f, 0.0f, 1.0f);
   float material = -1.0f;
+  bool near = false;
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && tHit < 0.0f; ++i)
   {
     vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
@@ -451,7 +465,8 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
     {
       int list = int(cellTexel.x);
       int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
-      vec2 near = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
+      near = near || count > 0;
+      vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
       float t = tIn;
       ReliefPathEvent entered;
       entered.normal = vec3(0.0f, 0.0f, 1.0f);
@@ -459,9 +474,9 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
       for (int e = 0; e < RELIEF_PATH_EVENTS; ++e)
       {
         ReliefPathEvent event =
-          reliefPathNextEvent(ray, list, count, near, base, t + 1e-6f, tOut);
+          reliefPathNextEvent(ray, list, count, centre, base, t + 1e-6f, tOut);
         samples += count;
-        if (reliefPathSolid(list, count, near, reliefRayAt(ray, 0.5f * (t + event.t)), base))
+        if (reliefPathSolid(list, count, centre, reliefRayAt(ray, 0.5f * (t + event.t)), base))
         {
           tHit = t;
           normal = entered.normal;
@@ -494,6 +509,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   float facing = dot(normal, ray.direction);
   reliefPathHitNormal = facing > 0.0f ? -normal : normal;
   reliefPathHitMaterial = material;
+  reliefPathNearFeatures = near;
   bool found = tHit >= 0.0f;
   float t = found ? tHit : tEnd;
   float back = min(1e-3f / max(ray.direction.z, 1e-6f), 0.5f * (t - tStart));
@@ -523,8 +539,10 @@ float reliefPathLightVisibility(vec3 clearPoint, vec3 lightDirection)
   }
   vec3 hitNormal = reliefPathHitNormal;
   float hitMaterial = reliefPathHitMaterial;
+  bool hitNear = reliefPathNearFeatures;
   ReliefHit blocked = reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f);
   reliefPathHitNormal = hitNormal;
   reliefPathHitMaterial = hitMaterial;
+  reliefPathNearFeatures = hitNear;
   return blocked.hit && blocked.t < 1.0f ? 0.0f : 1.0f;
 }
