@@ -150,8 +150,8 @@ std::string vtkOpenGLPathFeatureMapper::GetSearchSource()
 std::string vtkOpenGLPathFeatureMapper::GetHitColourCode()
 {
   // the footprint's materials, weighted as its normals (reliefFootprintMaterials)
-  return "  reliefPathShadeMaterials(diffuseColor, specularColor, specularPower, "
-         "diffuseIntensity);\n";
+  return "  reliefPathShadeMaterials(ambientColor, diffuseColor, specularColor, specularPower, "
+         "ambientIntensity, diffuseIntensity);\n";
 }
 
 vtkIdType vtkOpenGLPathFeatureMapper::GetTextureBytes()

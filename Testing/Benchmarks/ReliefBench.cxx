@@ -11,6 +11,7 @@
 // speed against its accuracy (ReliefAccuracy.h).
 #include "ReliefAccuracy.h"
 #include "ReliefAutomaticStudy.h"
+#include "ReliefPathStudy.h"
 #include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
 #include "ReliefScene.h"
@@ -91,7 +92,7 @@ bool KnownSections(const std::string& list)
     if (section != "plain" && section != "methods" && section != "filters" &&
       section != "accuracy" && section != "sweeps" && section != "quadric" &&
       section != "derivative" && section != "sharing" && section != "shading" &&
-      section != "automatic")
+      section != "automatic" && section != "paths")
     {
       return false;
     }
@@ -390,7 +391,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
                    "                      filters, accuracy, sweeps, quadric, derivative,\n"
-                   "                      sharing, shading, automatic)\n"
+                   "                      sharing, shading, automatic, paths)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
@@ -598,6 +599,22 @@ int main(int argc, char* argv[])
     ? ReliefAutomaticStudy::Report(ReliefAutomaticStudy::Measure(automatic), automatic)
     : "(not run)\n";
 
+  ReliefPathStudy::Options pathOptions;
+  pathOptions.ImageDirectory = accuracy.ImageDirectory;
+  if (quick)
+  {
+    pathOptions.Width = 160;
+    pathOptions.Height = 120;
+    pathOptions.TruthColumns = 256;
+    pathOptions.TruthLayers = 48;
+    pathOptions.HeightMapSizes = { 64, 256 };
+    pathOptions.Supersampling = 2;
+    pathOptions.Frames = 1;
+    pathOptions.Rounds = 1;
+  }
+  const std::string pathSection =
+    wanted("paths") ? ReliefPathStudy::Study(pathOptions) : "(not run)\n";
+
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
   if (!wanted("plain"))
@@ -679,7 +696,8 @@ int main(int argc, char* argv[])
   std::cout << context.str() << "\n" << table.str() << "\n" << methodsContext << methodsTable
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
             << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection << "\n"
-            << shadingSection << "\n" << automaticSection << "\n" << sharingContext
+            << shadingSection << "\n" << automaticSection << "\n" << pathSection << "\n"
+            << sharingContext
             << sharingTable;
 
   if (!report.empty())
@@ -697,13 +715,32 @@ int main(int argc, char* argv[])
   {
     std::ofstream out(results);
     out << "# Results: speed against accuracy\n\n"
-        << "Produced by `./relief bench --results " << results << "`.\n\n"
-        << machine.str() << "\n" << accuracySection
-        << "\n## Stability: where each method fails\n\n" << sweepsSection
-        << "\n## Curved surfaces: the quadric frame's silhouettes\n\n" << quadricSection
-        << "\n## Tangent-free relief: the derivative frame\n\n" << derivativeSection
-        << "\n## Shading true to the pixel's footprint\n\n" << shadingSection
-        << "\n## Automatic quality: the search each fragment needs\n\n" << automaticSection;
+        << "Produced by `./relief bench" << (only.empty() ? "" : " --only " + only)
+        << " --results " << results << "`.\n\n"
+        << machine.str();
+    // the sections run, each under its heading (the accuracy study's is the page's)
+    const std::pair<const char*, const std::string*> sections[] = {
+      { nullptr, &accuracySection },
+      { "Stability: where each method fails", &sweepsSection },
+      { "Curved surfaces: the quadric frame's silhouettes", &quadricSection },
+      { "Tangent-free relief: the derivative frame", &derivativeSection },
+      { "Shading true to the pixel's footprint", &shadingSection },
+      { "Automatic quality: the search each fragment needs", &automaticSection },
+      { "Path features against geometry and height maps", &pathSection },
+    };
+    for (const auto& section : sections)
+    {
+      if (*section.second == "(not run)\n")
+      {
+        continue;
+      }
+      out << "\n";
+      if (section.first)
+      {
+        out << "## " << section.first << "\n\n";
+      }
+      out << *section.second;
+    }
     std::cout << "written to " << results << "\n";
   }
   return 0;

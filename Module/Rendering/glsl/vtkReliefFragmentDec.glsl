@@ -174,10 +174,12 @@ void reliefAddFootprintNormal(vec3 normal, float weight)
 
 #ifdef RELIEF_PATH_FEATURES
 // The colours VTK's lighting reads, as the footprint's materials weighted like its normals:
-// the actor's where a search met no material of its own.
-void reliefPathShadeMaterials(
-  inout vec3 diffuse, inout vec3 specular, inout float power, float intensity)
+// the actor's where a search met no material of its own; a material's colour is ambient
+// and diffuse, as scalars colour both.
+void reliefPathShadeMaterials(inout vec3 ambient, inout vec3 diffuse, inout vec3 specular,
+  inout float power, float ambientIntensity, float diffuseIntensity)
 {
+  vec3 mixedAmbient = vec3(0.0);
   vec3 mixedDiffuse = vec3(0.0);
   vec3 mixedSpecular = vec3(0.0);
   float mixedPower = 0.0;
@@ -187,6 +189,7 @@ void reliefPathShadeMaterials(
     int material = int(reliefFootprintMaterials[k]);
     if (material < 0)
     {
+      mixedAmbient += weight * ambient;
       mixedDiffuse += weight * diffuse;
       mixedSpecular += weight * specular;
       mixedPower += weight * power;
@@ -194,11 +197,13 @@ void reliefPathShadeMaterials(
     else
     {
       vec4 colour = RELIEF_PATH_TEXEL(material);
-      mixedDiffuse += weight * intensity * colour.rgb;
+      mixedAmbient += weight * ambientIntensity * colour.rgb;
+      mixedDiffuse += weight * diffuseIntensity * colour.rgb;
       mixedSpecular += weight * vec3(colour.a);
       mixedPower += weight * RELIEF_PATH_TEXEL(material + 1).x;
     }
   }
+  ambient = mixedAmbient;
   diffuse = mixedDiffuse;
   specular = mixedSpecular;
   power = mixedPower;

@@ -396,6 +396,26 @@ ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement ele
   return best;
 }
 
+// Whether the ray between t0 and t1 may come within the element's reach (its profile's
+// extent, at its largest scale): a cheap test on both ends' distances across and along.
+bool reliefPathReaches(ReliefPathElement element, ReliefRay ray, float t0, float t1)
+{
+  float reach =
+    element.halfWidth * element.extent * max(element.scaleStart, element.scaleEnd);
+  vec2 from = vec2(ray.origin.x + t0 * ray.direction.x, ray.origin.y + t0 * ray.direction.y) -
+    element.start;
+  vec2 to = vec2(ray.origin.x + t1 * ray.direction.x, ray.origin.y + t1 * ray.direction.y) -
+    element.start;
+  float across0 = dot(from, element.right);
+  float across1 = dot(to, element.right);
+  float along0 = dot(from, element.axis);
+  float along1 = dot(to, element.axis);
+  bool beside = (across0 > reach && across1 > reach) || (across0 < -reach && across1 < -reach);
+  bool beyond = (along0 < -reach && along1 < -reach) ||
+    (along0 > element.span + reach && along1 > element.span + reach);
+  return !beside && !beyond;
+}
+
 // The first crossing after `after` of any surface of the cell: the base, and each
 // element's facets and walls.
 ReliefPathEvent reliefPathNextEvent(ReliefRay ray, int list, int count, vec2 near, float base,
@@ -415,6 +435,10 @@ ReliefPathEvent reliefPathNextEvent(ReliefRay ray, int list, int count, vec2 nea
     vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
     int slot = k - 4 * (k / 4);
     ReliefPathElement element = reliefPathElement(int(reliefPathEntry(entries, slot)), near);
+    if (!reliefPathReaches(element, ray, after, until))
+    {
+      continue;
+    }
     vec2 previous = reliefPathPoint(element, element.points - 1);
     for (int p = 0; p < RELIEF_PATH_PROFILE_POINTS && p < element.points; ++p)
     {
