@@ -175,8 +175,9 @@ bool SegmentsCross(dvec2 a, dvec2 b, dvec2 c, dvec2 d)
     d4 != 0;
 }
 
-// An integer array of `name` in `data`, or null, with a warning if it is not one value.
-vtkDataArray* OneComponentArray(vtkFieldData* data, const char* name, int components)
+// The array `name` of `data` if it has `components` components, else null (its default
+// applies).
+vtkDataArray* ArrayWithComponents(vtkFieldData* data, const char* name, int components)
 {
   vtkDataArray* array = data ? data->GetArray(name) : nullptr;
   return array && array->GetNumberOfComponents() == components ? array : nullptr;
@@ -374,11 +375,11 @@ bool ReadPathAttributes(vtkPolyData* input, vtkIdType cell, double defaultWidth,
   int materialCount, Path& path, PathReport& report)
 {
   vtkCellData* cellData = input->GetCellData();
-  vtkDataArray* widths = OneComponentArray(cellData, "Width", 1);
-  vtkDataArray* profiles = OneComponentArray(cellData, "Profile", 1);
-  vtkDataArray* materials = OneComponentArray(cellData, "Material", 1);
-  vtkDataArray* priorities = OneComponentArray(cellData, "Priority", 1);
-  vtkDataArray* perturbations = OneComponentArray(cellData, "Perturbation", 2);
+  vtkDataArray* widths = ArrayWithComponents(cellData, "Width", 1);
+  vtkDataArray* profiles = ArrayWithComponents(cellData, "Profile", 1);
+  vtkDataArray* materials = ArrayWithComponents(cellData, "Material", 1);
+  vtkDataArray* priorities = ArrayWithComponents(cellData, "Priority", 1);
+  vtkDataArray* perturbations = ArrayWithComponents(cellData, "Perturbation", 2);
   const double width = widths ? widths->GetTuple1(cell) : defaultWidth;
   if (!(width > 0.0) || !std::isfinite(width))
   {
@@ -500,7 +501,7 @@ void ReadPaths(vtkPolyData* input, double defaultWidth, int profileCount, int ma
   {
     return;
   }
-  vtkDataArray* controls = OneComponentArray(input->GetPointData(), "ControlPoint", 1);
+  vtkDataArray* controls = ArrayWithComponents(input->GetPointData(), "ControlPoint", 1);
   // cell data counts vertices first, then lines
   vtkIdType cell = input->GetNumberOfVerts();
   auto lines = vtk::TakeSmartPointer(input->GetLines()->NewIterator());

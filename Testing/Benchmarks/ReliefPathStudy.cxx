@@ -70,6 +70,17 @@ void SetLook(vtkActor* actor)
   actor->GetProperty()->SetSpecularPower(SpecularPower);
 }
 
+// The diffuse colour of material texel `material` (the actor's for -1), in [0, 255].
+std::array<double, 3> MaterialColour(const mirror::PathTextures& textures, float material)
+{
+  if (material < 0.0f)
+  {
+    return { 255.0 * ActorColour[0], 255.0 * ActorColour[1], 255.0 * ActorColour[2] };
+  }
+  const glm::vec4 colour = textures.Texel(int(material));
+  return { 255.0 * colour.x, 255.0 * colour.y, 255.0 * colour.z };
+}
+
 // Where a vertical line through (u, v) enters and leaves the features' matter, by the
 // CPU mirror's exact crossings (vtkReliefPathSearch.glsl, checked against a marched
 // reference by the unit tests): depths, and the material of the surface at each.
@@ -195,15 +206,8 @@ vtkSmartPointer<vtkPolyData> TruthGeometry(
         material = column.Materials[k];
       }
     }
-    double rgb[3] = { ActorColour[0], ActorColour[1], ActorColour[2] };
-    if (material >= 0.0f)
-    {
-      const glm::vec4 colour = textures.Texel(int(material));
-      rgb[0] = colour.x;
-      rgb[1] = colour.y;
-      rgb[2] = colour.z;
-    }
-    colours->SetTuple3(p, 255.0 * rgb[0], 255.0 * rgb[1], 255.0 * rgb[2]);
+    const std::array<double, 3> rgb = MaterialColour(textures, material);
+    colours->SetTuple3(p, rgb[0], rgb[1], rgb[2]);
   }
   surface->GetPointData()->SetScalars(colours);
   return surface;
@@ -238,17 +242,10 @@ HeightMap Rasterize(const mirror::PathTextures& textures, int size)
       const float first = column.Depths.empty() ? float(deepest) : column.Depths.front();
       const float material = column.Materials.empty() ? -1.0f : column.Materials.front();
       depths[t] = static_cast<float>(first / deepest);
-      double rgb[3] = { ActorColour[0], ActorColour[1], ActorColour[2] };
-      if (material >= 0.0f)
-      {
-        const glm::vec4 colour = textures.Texel(int(material));
-        rgb[0] = colour.x;
-        rgb[1] = colour.y;
-        rgb[2] = colour.z;
-      }
+      const std::array<double, 3> rgb = MaterialColour(textures, material);
       for (int c = 0; c < 3; ++c)
       {
-        colours[3 * t + c] = static_cast<unsigned char>(std::lround(255.0 * rgb[c]));
+        colours[3 * t + c] = static_cast<unsigned char>(std::lround(rgb[c]));
       }
     }
   });
@@ -309,36 +306,6 @@ long EdgePixels(const ReliefMetrics::Capture& truth, const ReliefMetrics::Captur
     }
   }
   return std::max(edges, 1L);
-}
-
-// The supersampled capture averaged down by `factor` along each axis.
-ReliefMetrics::Capture Downsample(const ReliefMetrics::Capture& fine, int factor)
-{
-  ReliefMetrics::Capture coarse;
-  coarse.Width = fine.Width / factor;
-  coarse.Height = fine.Height / factor;
-  coarse.Rgb.assign(3 * static_cast<size_t>(coarse.Width) * coarse.Height, 0.0f);
-  coarse.EyeDepth.assign(static_cast<size_t>(coarse.Width) * coarse.Height, 0.0f);
-  for (int y = 0; y < coarse.Height; ++y)
-  {
-    for (int x = 0; x < coarse.Width; ++x)
-    {
-      const size_t pixel = static_cast<size_t>(y) * coarse.Width + x;
-      for (int j = 0; j < factor; ++j)
-      {
-        for (int i = 0; i < factor; ++i)
-        {
-          const size_t sample = static_cast<size_t>(y * factor + j) * fine.Width + x * factor + i;
-          for (int c = 0; c < 3; ++c)
-          {
-            coarse.Rgb[3 * pixel + c] += fine.Rgb[3 * sample + c] / (factor * factor);
-          }
-          coarse.EyeDepth[pixel] = std::max(coarse.EyeDepth[pixel], fine.EyeDepth[sample]);
-        }
-      }
-    }
-  }
-  return coarse;
 }
 
 // The square's interior as the view shows it: covered by the polygon and by the base
@@ -501,7 +468,8 @@ std::string Study(const Options& options)
     const ReliefMetrics::Capture baseCapture = lineup.Capture(basePlane);
     const std::vector<bool> inside = Interior(lineup.Capture(topPlane), baseCapture);
     const ReliefMetrics::Capture colourTruth = Within(
-      Downsample(ReliefScene::Capture(fineWindow, fineRenderer), options.Supersampling), inside);
+      ReliefMetrics::Downsample(ReliefScene::Capture(fineWindow, fineRenderer), options.Supersampling),
+      inside);
     const ReliefMetrics::Capture truthCapture = Within(lineup.Capture(rows[0].Actor), inside);
     const long edges = EdgePixels(truthCapture, baseCapture);
     std::vector<vtkActor*> timed;

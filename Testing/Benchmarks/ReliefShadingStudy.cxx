@@ -82,37 +82,6 @@ double Luminance(const float* rgb)
   return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
 }
 
-// The supersampled capture averaged down by `factor` along each axis; a pixel counts as
-// covered only where all its samples are.
-ReliefMetrics::Capture Downsample(const ReliefMetrics::Capture& fine, int factor)
-{
-  ReliefMetrics::Capture coarse;
-  coarse.Width = fine.Width / factor;
-  coarse.Height = fine.Height / factor;
-  coarse.Rgb.assign(3 * static_cast<size_t>(coarse.Width) * coarse.Height, 0.0f);
-  coarse.EyeDepth.assign(static_cast<size_t>(coarse.Width) * coarse.Height, 0.0f);
-  for (int y = 0; y < coarse.Height; ++y)
-  {
-    for (int x = 0; x < coarse.Width; ++x)
-    {
-      const size_t pixel = static_cast<size_t>(y) * coarse.Width + x;
-      for (int j = 0; j < factor; ++j)
-      {
-        for (int i = 0; i < factor; ++i)
-        {
-          const size_t sample = static_cast<size_t>(y * factor + j) * fine.Width + x * factor + i;
-          for (int c = 0; c < 3; ++c)
-          {
-            coarse.Rgb[3 * pixel + c] += fine.Rgb[3 * sample + c] / (factor * factor);
-          }
-          coarse.EyeDepth[pixel] = std::max(coarse.EyeDepth[pixel], fine.EyeDepth[sample]);
-        }
-      }
-    }
-  }
-  return coarse;
-}
-
 struct Comparison
 {
   double LuminanceBias = 0.0;
@@ -268,7 +237,7 @@ std::vector<Measurement> Measure(const Options& options)
       renderer->RemoveActor(geometryActor);
       fineRenderer->AddActor(geometryActor);
       fineWindow->Render();
-      const ReliefMetrics::Capture truth = Downsample(
+      const ReliefMetrics::Capture truth = ReliefMetrics::Downsample(
         ReliefScene::Capture(fineWindow, fineRenderer), options.Supersampling);
       fineRenderer->RemoveActor(geometryActor);
 

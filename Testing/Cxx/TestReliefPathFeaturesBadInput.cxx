@@ -43,25 +43,15 @@ struct Census
   int Cut = 0; // covered pixels deeper than the polygon: a feature drawn
   int Errors = 0;
   int Warnings = 0;
-  std::vector<std::string> Messages;
+  vtkSmartPointer<ReliefEventRecorder> Messages;
 
-  bool Says(const std::string& text) const
-  {
-    for (const std::string& message : this->Messages)
-    {
-      if (message.find(text) != std::string::npos)
-      {
-        return true;
-      }
-    }
-    return false;
-  }
+  bool Says(const std::string& text) const { return this->Messages->AnyMessageContains(text); }
 };
 
 // Renders the unit square with `mapper` from straight above, twice.
 Census Render(vtkRenderWindow* window, vtkOpenGLPathFeatureMapper* mapper)
 {
-  vtkNew<ReliefEventRecorder> recorder;
+  auto recorder = vtkSmartPointer<ReliefEventRecorder>::New();
   mapper->AddObserver(vtkCommand::ErrorEvent, recorder);
   mapper->AddObserver(vtkCommand::WarningEvent, recorder);
   mapper->SetInputData(ReliefScene::Square(1.0));
@@ -79,22 +69,25 @@ Census Render(vtkRenderWindow* window, vtkOpenGLPathFeatureMapper* mapper)
   window->Render();
   const ReliefMetrics::Capture shaded = ReliefScene::Capture(window, renderer);
   Census census;
+  auto background = [&](size_t pixel) {
+    const float* rgb = &shaded.Rgb[3 * pixel];
+    return rgb[2] == 1.0f && rgb[0] == 0.0f && rgb[1] == 0.0f;
+  };
   double nearest = 1e30;
   for (size_t pixel = 0; pixel < shaded.EyeDepth.size(); ++pixel)
   {
-    const float* rgb = &shaded.Rgb[3 * pixel];
-    if (!(rgb[2] == 1.0f && rgb[0] == 0.0f && rgb[1] == 0.0f) && std::isfinite(shaded.EyeDepth[pixel]))
+    if (!background(pixel) && std::isfinite(shaded.EyeDepth[pixel]))
     {
       nearest = std::min(nearest, static_cast<double>(shaded.EyeDepth[pixel]));
     }
   }
   for (size_t pixel = 0; pixel < shaded.EyeDepth.size(); ++pixel)
   {
-    const float* rgb = &shaded.Rgb[3 * pixel];
-    if (rgb[2] == 1.0f && rgb[0] == 0.0f && rgb[1] == 0.0f)
+    if (background(pixel))
     {
       continue;
     }
+    const float* rgb = &shaded.Rgb[3 * pixel];
     ++census.Covered;
     census.Black += rgb[0] == 0.0f && rgb[1] == 0.0f && rgb[2] == 0.0f ? 1 : 0;
     census.BadDepth += std::isfinite(shaded.EyeDepth[pixel]) ? 0 : 1;
@@ -103,11 +96,11 @@ Census Render(vtkRenderWindow* window, vtkOpenGLPathFeatureMapper* mapper)
   }
   census.Errors = recorder->Count(vtkCommand::ErrorEvent);
   census.Warnings = recorder->Count(vtkCommand::WarningEvent);
-  census.Messages = recorder->Messages;
+  census.Messages = recorder;
   std::cout << "covered " << census.Covered << " (black " << census.Black << ", bad depth "
             << census.BadDepth << ", cut " << census.Cut << "); errors " << census.Errors
             << ", warnings " << census.Warnings << "\n";
-  for (const std::string& message : census.Messages)
+  for (const std::string& message : recorder->Messages)
   {
     std::cout << "  said: " << message;
   }

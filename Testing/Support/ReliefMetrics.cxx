@@ -86,6 +86,35 @@ std::vector<float> Mean(const OIIO::ImageBuf& image)
 
 namespace ReliefMetrics
 {
+Capture Downsample(const Capture& fine, int factor)
+{
+  Capture coarse;
+  coarse.Width = fine.Width / factor;
+  coarse.Height = fine.Height / factor;
+  coarse.Rgb.assign(3 * static_cast<size_t>(coarse.Width) * coarse.Height, 0.0f);
+  coarse.EyeDepth.assign(static_cast<size_t>(coarse.Width) * coarse.Height, 0.0f);
+  for (int y = 0; y < coarse.Height; ++y)
+  {
+    for (int x = 0; x < coarse.Width; ++x)
+    {
+      const size_t pixel = static_cast<size_t>(y) * coarse.Width + x;
+      for (int j = 0; j < factor; ++j)
+      {
+        for (int i = 0; i < factor; ++i)
+        {
+          const size_t sample = static_cast<size_t>(y * factor + j) * fine.Width + x * factor + i;
+          for (int c = 0; c < 3; ++c)
+          {
+            coarse.Rgb[3 * pixel + c] += fine.Rgb[3 * sample + c] / (factor * factor);
+          }
+          coarse.EyeDepth[pixel] = std::max(coarse.EyeDepth[pixel], fine.EyeDepth[sample]);
+        }
+      }
+    }
+  }
+  return coarse;
+}
+
 long CoverageDifference(const Capture& a, const Capture& b)
 {
   RequireSameSize(a, b);

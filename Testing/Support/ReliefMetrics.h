@@ -23,6 +23,10 @@ struct Capture
   bool Covers(std::size_t pixel) const { return this->EyeDepth[pixel] < 1e30f; }
 };
 
+/// A capture rendered `factor` times larger per axis, averaged down: each pixel's colour
+/// the mean of its samples, its depth their farthest (covered only where all are).
+Capture Downsample(const Capture& fine, int factor);
+
 /// The coverage of `method` against `truth` as a picture: grey where both cover, red where
 /// only the method does, green where only the truth does, black where neither.
 Capture CoverageComparison(const Capture& method, const Capture& truth);
