@@ -107,25 +107,18 @@ Column Crossings(const mirror::PathTextures& textures, double u, double v)
   Column column;
   bool solid = false;
   float t = 0.0f;
-  float material = -1.0f;
-  for (int e = 0; e < 96; ++e)
+  for (int k = 0; k < 96; ++k)
   {
-    const mirror::ReliefPathEvent event =
-      mirror::reliefPathNextEvent(ray, list, count, centre, base, t + 1e-6f, end);
-    const bool inside =
-      mirror::reliefPathSolid(list, count, centre, mirror::reliefRayAt(ray, 0.5f * (t + event.t)), base);
-    if (inside != solid)
-    {
-      column.Depths.push_back(t);
-      column.Materials.push_back(material);
-      solid = inside;
-    }
-    if (event.t >= end)
+    const mirror::ReliefPathTransition change =
+      mirror::reliefPathCellTransition(ray, list, count, centre, base, t, end, !solid);
+    if (change.t < 0.0f)
     {
       break;
     }
-    t = event.t;
-    material = event.material;
+    column.Depths.push_back(change.t);
+    column.Materials.push_back(change.material);
+    solid = !solid;
+    t = change.t;
   }
   return column;
 }

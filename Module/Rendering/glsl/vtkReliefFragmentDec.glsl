@@ -249,9 +249,17 @@ vec3 reliefShadeFootprint(
   searched = 0.0;
 #endif
 #ifdef RELIEF_PATH_FEATURES
-  // path features have sharp edges at every scale: wherever the ray met features, the
-  // pixel is supersampled (the path-feature paper, s5.7), its normals and materials mixed
-  searched = reliefFootprintShading == 1 && reliefPathNearFeatures ? 1.0 : searched;
+  // path features have sharp edges at every scale: wherever a feature's reach comes within
+  // the footprint's rays of the view ray's path, the pixel is supersampled (the path-feature
+  // paper, s5.7, judged as it does on the cells the view ray passed), its normals and
+  // materials mixed; elsewhere every footprint ray would meet the plain base, at any size
+  float footprintReach = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    footprintReach = max(footprintReach, length(reliefRotatedGrid[k].x * fragment.tcoordAlongX +
+      reliefRotatedGrid[k].y * fragment.tcoordAlongY));
+  }
+  searched = reliefFootprintShading == 1 && reliefPathClearance <= footprintReach ? 1.0 : 0.0;
 #endif
   if (searched < 1.0)
   {

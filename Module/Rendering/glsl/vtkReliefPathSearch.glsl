@@ -30,7 +30,9 @@
 
 vec3 reliefPathHitNormal;
 float reliefPathHitMaterial;
-bool reliefPathNearFeatures; // the last walk met a cell that lists features
+// How close the last walk came to any feature, in (u, v): the least reliefPathGap of the
+// elements listed where it passed below a cell's top; 1e30 where none.
+float reliefPathClearance;
 
 // One element, placed in the copy of the tile the walk is in.
 struct ReliefPathElement
@@ -46,6 +48,7 @@ struct ReliefPathElement
   int profile;     // the profile's first point's texel
   int points;
   float extent;    // the most |x| of the profile
+  float bottom;    // its deepest y
   float material;
   float priority;
 };
@@ -76,34 +79,46 @@ ReliefPathElement reliefPathElement(int texel, vec2 near)
   element.profile = int(path.y) + 1;
   element.points = min(int(profile.x), RELIEF_PATH_PROFILE_POINTS);
   element.extent = profile.y;
+  element.bottom = profile.w;
   element.material = path.z;
   element.priority = path.w;
   return element;
 }
 
-vec2 reliefPathPoint(ReliefPathElement element, int k)
+// Whether a ray from (x, y) toward +x crosses the profile's segment from a to b: 1 or 0.
+int reliefPathCrosses(vec2 a, vec2 b, float x, float y)
 {
-  vec4 pair = RELIEF_PATH_TEXEL(element.profile + k / 2);
-  return (k - 2 * (k / 2)) == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+  if ((b.y > y) == (a.y > y))
+  {
+    return 0;
+  }
+  return x < b.x + (y - b.y) * (a.x - b.x) / (a.y - b.y) ? 1 : 0;
 }
 
-// Whether (x, y) lies inside the profile closed by its last-to-first segment (crossings
-// of a ray toward +x, even-odd).
-bool reliefPathInsideProfile(ReliefPathElement element, float x, float y)
+// Whether (x, y0) and (x, y1) lie inside the profile closed by its last-to-first segment
+// (even-odd): bits 1 and 2. Its points are read two a texel.
+int reliefPathInsideProfile(ReliefPathElement element, float x, float y0, float y1)
 {
-  bool inside = false;
-  vec2 previous = reliefPathPoint(element, element.points - 1);
-  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
+  int crossings0 = 0;
+  int crossings1 = 0;
+  vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
+  vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; k += 2)
   {
-    vec2 point = reliefPathPoint(element, k);
-    if ((point.y > y) != (previous.y > y))
-    {
-      float crossing = point.x + (y - point.y) * (previous.x - point.x) / (previous.y - point.y);
-      inside = x < crossing ? !inside : inside;
-    }
+    vec4 pair = RELIEF_PATH_TEXEL(element.profile + k / 2);
+    vec2 point = vec2(pair.x, pair.y);
+    crossings0 += reliefPathCrosses(previous, point, x, y0);
+    crossings1 += reliefPathCrosses(previous, point, x, y1);
     previous = point;
+    if (k + 1 < element.points)
+    {
+      point = vec2(pair.z, pair.w);
+      crossings0 += reliefPathCrosses(previous, point, x, y0);
+      crossings1 += reliefPathCrosses(previous, point, x, y1);
+      previous = point;
+    }
   }
-  return inside;
+  return (crossings0 % 2) + 2 * (crossings1 % 2);
 }
 
 // The profile coordinates (x, y) of a point, and the scale there (z); z = 0 where the
@@ -134,49 +149,26 @@ vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
 int reliefPathElementClass(ReliefPathElement element, vec3 point, float base)
 {
   vec3 profile = reliefPathProfileAt(element, point, base);
-  if (profile.z == 0.0f || abs(profile.x) > element.extent)
+  if (profile.z == 0.0f || abs(profile.x) > element.extent || profile.y > element.bottom)
   {
     return 0;
   }
   float opening = 1e-6f;
+  // below the base, the profile's inside is cut; above it, its inside is added, and above
+  // its opening the cut goes on up
+  float y = profile.y >= 0.0f ? max(profile.y, opening) : profile.y;
+  int inside = reliefPathInsideProfile(element, profile.x, y, opening);
   if (profile.y >= 0.0f)
   {
-    return reliefPathInsideProfile(element, profile.x, max(profile.y, opening)) ? 2 : 0;
+    return inside % 2 == 1 ? 2 : 0;
   }
-  if (reliefPathInsideProfile(element, profile.x, profile.y))
-  {
-    return 1;
-  }
-  return reliefPathInsideProfile(element, profile.x, opening) ? 2 : 0;
+  return inside % 2 == 1 ? 1 : (inside >= 2 ? 2 : 0);
 }
 
 // Component `slot` of a texel of a cell's list.
 float reliefPathEntry(vec4 entries, int slot)
 {
   return slot == 0 ? entries.x : (slot == 1 ? entries.y : (slot == 2 ? entries.z : entries.w));
-}
-
-// Whether a point is solid: the highest priority among the elements that hold it
-// decides, a cut winning among equals; elsewhere the base surface.
-bool reliefPathSolid(int list, int count, vec2 near, vec3 point, float base)
-{
-  float best = -1e30f;
-  bool cut = false;
-  bool held = false;
-  for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
-  {
-    vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
-    int slot = k - 4 * (k / 4);
-    ReliefPathElement element = reliefPathElement(int(reliefPathEntry(entries, slot)), near);
-    int kind = reliefPathElementClass(element, point, base);
-    if (kind != 0 && element.priority >= best)
-    {
-      cut = element.priority > best ? kind == 2 : (cut || kind == 2);
-      best = element.priority;
-      held = true;
-    }
-  }
-  return held ? !cut : point.z >= base;
 }
 
 // The next crossing of a surface after `after`, with its normal and material.
@@ -208,10 +200,12 @@ vec2 reliefPathRoots(float a, float b, float c)
     return vec2(root, root);
   }
   float discriminant = b * b - 4.0f * a * c;
-  if (discriminant < 0.0f)
+  if (discriminant < -1e-5f * b * b)
   {
     return vec2(-1e30f, -1e30f);
   }
+  // a double root rounded below zero (a ray down a revolved end's axis) still crosses
+  discriminant = max(discriminant, 0.0f);
   float q = -0.5f * (b >= 0.0f ? b + sqrt(discriminant) : b - sqrt(discriminant));
   float r1 = q / a;
   float r2 = q != 0.0f ? c / q : r1;
@@ -372,8 +366,15 @@ ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement ele
         element.material);
     }
   }
+  float alongAfter = dot(offset, element.axis) + after * dot(run, element.axis);
+  float alongBest = dot(offset, element.axis) + best.t * dot(run, element.axis);
   for (int end = -1; end <= 1; end += 2)
   {
+    if ((end < 0 && min(alongAfter, alongBest) >= 0.0f) ||
+      (end > 0 && max(alongAfter, alongBest) <= element.span))
+    {
+      continue; // the ray stays beside the element's straight part
+    }
     vec2 centre = end < 0 ? element.start : element.end;
     float radius = w * (end < 0 ? element.scaleStart : element.scaleEnd) * abs(opening);
     vec2 q0 = vec2(ray.origin.x, ray.origin.y) - centre;
@@ -396,9 +397,10 @@ ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement ele
   return best;
 }
 
-// Whether the ray between t0 and t1 may come within the element's reach (its profile's
-// extent, at its largest scale): a cheap test on both ends' distances across and along.
-bool reliefPathReaches(ReliefPathElement element, ReliefRay ray, float t0, float t1)
+// How far the ray between t0 and t1 stays from the element's reach (its profile's extent,
+// at its largest scale) in (u, v): a lower bound, from both ends' distances across and
+// along; 0 or less where it may come within reach.
+float reliefPathGap(ReliefPathElement element, ReliefRay ray, float t0, float t1)
 {
   float reach =
     element.halfWidth * element.extent * max(element.scaleStart, element.scaleEnd);
@@ -410,50 +412,191 @@ bool reliefPathReaches(ReliefPathElement element, ReliefRay ray, float t0, float
   float across1 = dot(to, element.right);
   float along0 = dot(from, element.axis);
   float along1 = dot(to, element.axis);
-  bool beside = (across0 > reach && across1 > reach) || (across0 < -reach && across1 < -reach);
-  bool beyond = (along0 < -reach && along1 < -reach) ||
-    (along0 > element.span + reach && along1 > element.span + reach);
-  return !beside && !beyond;
+  float beside = (across0 > 0.0f) == (across1 > 0.0f) ? min(abs(across0), abs(across1)) : 0.0f;
+  float before = min(-along0, -along1);
+  float beyond = min(along0, along1) - element.span;
+  return max(beside, max(before, beyond)) - reach;
 }
 
-// The first crossing after `after` of any surface of the cell: the base, and each
-// element's facets and walls.
-ReliefPathEvent reliefPathNextEvent(ReliefRay ray, int list, int count, vec2 near, float base,
-  float after, float until)
+// The crossings of the profile's segment from a to b (its facet, and where it meets the
+// base the wall up from the cut's opening, when the ray passes above the base).
+ReliefPathEvent reliefPathSegmentEvents(ReliefPathEvent best, ReliefPathElement element,
+  ReliefRay ray, float base, vec2 a, vec2 b, float after, bool aboveBase)
 {
-  ReliefPathEvent best;
-  best.t = until;
-  best.normal = vec3(0.0f, 0.0f, 1.0f);
-  best.material = -1.0f;
-  if (ray.direction.z != 0.0f)
+  best = reliefPathFacetEvents(best, element, ray, base, a, b, after);
+  if (aboveBase && (b.y > 0.0f) != (a.y > 0.0f))
   {
-    best = reliefPathKeep(best, (base - ray.origin.z) / ray.direction.z, after,
-      vec3(0.0f, 0.0f, 1.0f), -1.0f);
+    float opening = b.x - b.y * (a.x - b.x) / (a.y - b.y);
+    best = reliefPathWallEvents(best, element, ray, base, opening, after);
   }
+  return best;
+}
+
+// The first crossing after `after` and before best.t of the element's facets and walls.
+ReliefPathEvent reliefPathElementEvents(
+  ReliefPathEvent best, ReliefPathElement element, ReliefRay ray, float base, float after)
+{
+  bool aboveBase = min(ray.origin.z + after * ray.direction.z,
+                     ray.origin.z + best.t * ray.direction.z) < base;
+  vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
+  vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  vec4 pair = last;
+  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
+  {
+    bool first = k % 2 == 0;
+    pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    best = reliefPathSegmentEvents(best, element, ray, base, previous, point, after, aboveBase);
+    previous = point;
+  }
+  return best;
+}
+
+// Where the ray, within one cell from tFrom to tTo, first passes from air into matter
+// (intoMatter) or from matter into air, with the normal and material of the surface
+// crossed there; t = -1 where it does not. `gap` is the least reliefPathGap of the cell's
+// elements, `samples` the element tests.
+struct ReliefPathTransition
+{
+  float t;
+  vec3 normal;
+  float material;
+  float gap;
+  int samples;
+};
+
+ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count, vec2 near,
+  float base, float tFrom, float tTo, bool intoMatter)
+{
+  // Each element's state is kept between crossings (what it makes of the ray: 0 nothing,
+  // 1 matter, 2 a cut, reliefPathElementClass; -1 out of reach) with its next crossing,
+  // so a crossing re-tests its own element only; the base plane changes the state of every
+  // element in reach (above it a profile adds, below it cuts).
+  float next[RELIEF_PATH_CELL_CAPACITY];
+  vec3 nextNormal[RELIEF_PATH_CELL_CAPACITY];
+  int kind[RELIEF_PATH_CELL_CAPACITY];
+  float priority[RELIEF_PATH_CELL_CAPACITY];
+  ReliefPathTransition result;
+  result.t = -1.0f;
+  result.normal = vec3(0.0f, 0.0f, 1.0f);
+  result.material = -1.0f;
+  result.gap = 1e30f;
+  result.samples = count;
+  float tBase = ray.direction.z != 0.0f ? (base - ray.origin.z) / ray.direction.z : -1e30f;
+  // the ray's path up to the base, where most rays stop: its gap is the one that counts
+  // for a transition there (the footprint's rays differ only where the view ray's path
+  // up to its transition passes near a feature)
+  float tToBase = clamp(tBase, tFrom, tTo);
+  float gapToBase = 1e30f;
+  tBase = tBase > tFrom + 1e-6f && tBase < tTo ? tBase : tTo;
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
   {
     vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
-    int slot = k - 4 * (k / 4);
-    ReliefPathElement element = reliefPathElement(int(reliefPathEntry(entries, slot)), near);
-    if (!reliefPathReaches(element, ray, after, until))
+    ReliefPathElement element =
+      reliefPathElement(int(reliefPathEntry(entries, k - 4 * (k / 4))), near);
+    priority[k] = element.priority;
+    next[k] = tTo;
+    nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
+    kind[k] = -1;
+    float gap = reliefPathGap(element, ray, tFrom, tTo);
+    result.gap = min(result.gap, gap);
+    gapToBase = min(gapToBase, reliefPathGap(element, ray, tFrom, tToBase));
+    if (gap <= 0.0f)
     {
-      continue;
-    }
-    vec2 previous = reliefPathPoint(element, element.points - 1);
-    for (int p = 0; p < RELIEF_PATH_PROFILE_POINTS && p < element.points; ++p)
-    {
-      vec2 point = reliefPathPoint(element, p);
-      best = reliefPathFacetEvents(best, element, ray, base, previous, point, after);
-      if ((point.y > 0.0f) != (previous.y > 0.0f))
-      {
-        float opening =
-          point.x - point.y * (previous.x - point.x) / (previous.y - point.y);
-        best = reliefPathWallEvents(best, element, ray, base, opening, after);
-      }
-      previous = point;
+      ReliefPathEvent first;
+      first.t = tTo;
+      first.normal = vec3(0.0f, 0.0f, 1.0f);
+      first.material = -1.0f;
+      first = reliefPathElementEvents(first, element, ray, base, tFrom + 1e-6f);
+      next[k] = first.t;
+      nextNormal[k] = first.normal;
+      kind[k] = reliefPathElementClass(
+        element, reliefRayAt(ray, 0.5f * (tFrom + min(first.t, tBase))), base);
     }
   }
-  return best;
+  float t = tFrom;
+  vec3 normal = vec3(0.0f, 0.0f, 1.0f);
+  float material = -1.0f;
+  for (int e = 0; e < RELIEF_PATH_EVENTS; ++e)
+  {
+    // the next crossing: the base (j = -1) or an element's
+    float tNext = tBase;
+    int j = -1;
+    for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+    {
+      j = next[k] < tNext ? k : j;
+      tNext = min(tNext, next[k]);
+    }
+    // matter between t and tNext: the highest priority among the elements that hold the
+    // ray there decides, a cut winning among equals; elsewhere the base surface. Crossings
+    // closer than 1e-6 (elements that meet, facets that join) are taken as one.
+    if (tNext > t + 1e-6f || tNext >= tTo)
+    {
+      float best = -1e30f;
+      bool cut = false;
+      bool held = false;
+      for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+      {
+        if (kind[k] > 0 && priority[k] >= best)
+        {
+          cut = priority[k] > best ? kind[k] == 2 : (cut || kind[k] == 2);
+          best = priority[k];
+          held = true;
+        }
+      }
+      bool matter = held ? !cut : ray.origin.z + 0.5f * (t + tNext) * ray.direction.z >= base;
+      if (matter == intoMatter)
+      {
+        result.gap = t <= tToBase ? gapToBase : result.gap;
+        result.t = t;
+        result.normal = normal;
+        result.material = material;
+        return result;
+      }
+    }
+    if (tNext >= tTo)
+    {
+      return result;
+    }
+    t = tNext;
+    if (j < 0)
+    {
+      // the base plane: every element's state on from here
+      normal = vec3(0.0f, 0.0f, 1.0f);
+      material = -1.0f;
+      tBase = tTo;
+      for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+      {
+        if (kind[k] >= 0)
+        {
+          vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
+          ReliefPathElement element =
+            reliefPathElement(int(reliefPathEntry(entries, k - 4 * (k / 4))), near);
+          kind[k] = reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + next[k])), base);
+        }
+      }
+      result.samples += count;
+    }
+    else
+    {
+      vec4 entries = RELIEF_PATH_TEXEL(list + j / 4);
+      ReliefPathElement element =
+        reliefPathElement(int(reliefPathEntry(entries, j - 4 * (j / 4))), near);
+      normal = nextNormal[j];
+      material = element.material;
+      ReliefPathEvent following;
+      following.t = tTo;
+      following.normal = vec3(0.0f, 0.0f, 1.0f);
+      following.material = -1.0f;
+      following = reliefPathElementEvents(following, element, ray, base, t + 1e-6f);
+      next[j] = following.t;
+      nextNormal[j] = following.normal;
+      kind[j] =
+        reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + min(following.t, tBase))), base);
+      result.samples += 1;
+    }
+  }
+  return result;
 }
 
 // The path-feature walk of a straight ray from tStart to tEnd; the first entry into solid
@@ -477,7 +620,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   float tHit = -1.0f;
   vec3 normal = vec3(0.0f, 0.0f, 1.0f);
   float material = -1.0f;
-  bool near = false;
+  float clearance = 1e30f;
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && tHit < 0.0f; ++i)
   {
     vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
@@ -487,32 +630,17 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
     // Algorithm 1: a ray that leaves the cell above its highest feature passes it by
     if (ray.origin.z + tOut * ray.direction.z >= cellTexel.z)
     {
-      int list = int(cellTexel.x);
       int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
-      near = near || count > 0;
       vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
-      float t = tIn;
-      ReliefPathEvent entered;
-      entered.normal = vec3(0.0f, 0.0f, 1.0f);
-      entered.material = -1.0f;
-      for (int e = 0; e < RELIEF_PATH_EVENTS; ++e)
+      ReliefPathTransition entry = reliefPathCellTransition(
+        ray, int(cellTexel.x), count, centre, base, tIn, tOut, true);
+      samples += entry.samples;
+      clearance = min(clearance, entry.gap);
+      if (entry.t >= 0.0f)
       {
-        ReliefPathEvent event =
-          reliefPathNextEvent(ray, list, count, centre, base, t + 1e-6f, tOut);
-        samples += count;
-        if (reliefPathSolid(list, count, centre, reliefRayAt(ray, 0.5f * (t + event.t)), base))
-        {
-          tHit = t;
-          normal = entered.normal;
-          material = entered.material;
-          break;
-        }
-        if (event.t >= tOut)
-        {
-          break;
-        }
-        t = event.t;
-        entered = event;
+        tHit = entry.t;
+        normal = entry.normal;
+        material = entry.material;
       }
     }
     if (tHit >= 0.0f || tOut >= tEnd)
@@ -533,7 +661,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   float facing = dot(normal, ray.direction);
   reliefPathHitNormal = facing > 0.0f ? -normal : normal;
   reliefPathHitMaterial = material;
-  reliefPathNearFeatures = near;
+  reliefPathClearance = clearance;
   bool found = tHit >= 0.0f;
   float t = found ? tHit : tEnd;
   float back = min(1e-3f / max(ray.direction.z, 1e-6f), 0.5f * (t - tStart));
@@ -563,10 +691,10 @@ float reliefPathLightVisibility(vec3 clearPoint, vec3 lightDirection)
   }
   vec3 hitNormal = reliefPathHitNormal;
   float hitMaterial = reliefPathHitMaterial;
-  bool hitNear = reliefPathNearFeatures;
+  float hitClearance = reliefPathClearance;
   ReliefHit blocked = reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f);
   reliefPathHitNormal = hitNormal;
   reliefPathHitMaterial = hitMaterial;
-  reliefPathNearFeatures = hitNear;
+  reliefPathClearance = hitClearance;
   return blocked.hit && blocked.t < 1.0f ? 0.0f : 1.0f;
 }
