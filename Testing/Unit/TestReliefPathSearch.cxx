@@ -217,3 +217,121 @@ TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
     EXPECT_GE(agreeing, rays * 99 / 100) << slivers << " slivers, grid " << resolution;
   }
 }
+
+// Region sampling (s5.7) against the pixel sampled densely: over one straight element of
+// each kind of profile (a V, a ridge, a dovetail's overhang, the default groove), pixels
+// of random size, shape and slant; each surface the dense rays see takes the share of the
+// pixel the regions give it. Near an end, and on a profile that both cuts and adds, the
+// regions refuse (supersampling takes over).
+TEST(ReliefPathSearch, RegionSamplingMatchesThePixelSampledDensely)
+{
+  const std::vector<dvec2> Rimmed = { { -1.0, 0.0 }, { -0.7, -0.2 }, { -0.4, 0.0 }, { 0.0, 0.8 },
+    { 0.4, 0.0 }, { 0.7, -0.2 }, { 1.0, 0.0 } };
+  std::mt19937 random(57);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (const std::vector<dvec2>& profile : { VGroove, Ridge, Dovetail, DefaultGroove() })
+  {
+    Scene scene;
+    scene.Profiles = { profile };
+    scene.Paths.push_back({ { { 0.3, 0.5 }, { 0.5, 0.5 } }, 0.1, 0 });
+    Built built(scene);
+    int sampled = 0;
+    for (int k = 0; k < 60; ++k)
+    {
+      // across the groove and beside it, away from its ends; pixels 0.004 to 0.03 across,
+      // rays up to 60 degrees from the normal
+      const vec2 uv(0.36f + 0.08f * unit(random), 0.5f + 0.14f * (unit(random) - 0.5f));
+      const float angle = 6.2831853f * unit(random);
+      const float run = 1.7f * unit(random);
+      const vec3 direction(run * std::cos(angle), run * std::sin(angle), 1.0f);
+      const float size = 0.004f + 0.026f * unit(random);
+      const float turn = 6.2831853f * unit(random);
+      const vec2 alongX = size * vec2(std::cos(turn), std::sin(turn));
+      const vec2 alongY = size * (0.3f + 0.7f * unit(random)) *
+        vec2(-std::sin(turn + 0.4f * (unit(random) - 0.5f)), std::cos(turn));
+      const ReliefRay ray = Ray(uv, direction);
+      reliefSearchPathFeatures(ray, 0, 0);
+      const ReliefPathNearest nearest = reliefPathNearest;
+      ASSERT_GE(nearest.element, 0);
+      const ReliefPathRegions regions = reliefPathRegions(ray, nearest, alongX, alongY);
+      if (regions.count == 0)
+      {
+        continue;
+      }
+      sampled += 1;
+      // the surfaces seen, told apart by their normals, and the share of each
+      std::vector<std::pair<vec3, double>> expected;
+      std::vector<std::pair<vec3, double>> got;
+      auto count = [](std::vector<std::pair<vec3, double>>& shares, double weight) {
+        const vec3 normal = normalize(reliefPathHitNormal);
+        for (auto& share : shares)
+        {
+          if (dot(share.first, normal) > 0.9999f)
+          {
+            share.second += weight;
+            return;
+          }
+        }
+        shares.emplace_back(normal, weight);
+      };
+      const int n = 96;
+      for (int i = 0; i < n; ++i)
+      {
+        for (int j = 0; j < n; ++j)
+        {
+          const float x = (i + 0.5f) / n - 0.5f;
+          const float y = (j + 0.5f) / n - 0.5f;
+          reliefSearchPathFeatures(Ray(uv + x * alongX + y * alongY, direction), 0, 0);
+          count(expected, 1.0 / (n * n));
+        }
+      }
+      double total = 0.0;
+      for (int r = 0; r < regions.count; ++r)
+      {
+        const float offset = reliefPathEntry(regions.offsets, r);
+        ReliefRay regionRay = ray;
+        regionRay.origin.x += offset * regions.right.x;
+        regionRay.origin.y += offset * regions.right.y;
+        reliefPathElementWalk(regionRay, nearest.element, nearest.near);
+        const float weight = reliefPathEntry(regions.weights, r);
+        EXPECT_GE(weight, 0.0f);
+        total += weight;
+        count(got, weight);
+      }
+      EXPECT_NEAR(total, 1.0, 1e-5);
+      for (const auto& share : expected)
+      {
+        double region = 0.0;
+        for (const auto& other : got)
+        {
+          region += dot(other.first, share.first) > 0.9999f ? other.second : 0.0;
+        }
+        EXPECT_NEAR(region, share.second, 0.02)
+          << "normal " << share.first.x << " " << share.first.y << " " << share.first.z
+          << ", pixel at " << uv.x << " " << uv.y << " of " << size << ", ray " << direction.x
+          << " " << direction.y;
+      }
+    }
+    EXPECT_GE(sampled, 30); // most: the others see past an end along slanting rays
+  }
+  // the regions refuse where the pixel's rays pass the element's end, or where the
+  // profile both cuts and adds
+  Scene scene;
+  scene.Profiles = { VGroove, Rimmed };
+  scene.Paths.push_back({ { { 0.3, 0.3 }, { 0.5, 0.3 } }, 0.1, 0 });
+  scene.Paths.push_back({ { { 0.3, 0.7 }, { 0.5, 0.7 } }, 0.1, 1 });
+  Built built(scene);
+  const vec2 pixel(0.02f, 0.0f);
+  for (const vec2& uv : { vec2(0.29f, 0.3f), vec2(0.505f, 0.31f), vec2(0.4f, 0.7f) })
+  {
+    const ReliefRay ray = Ray(uv, vec3(0.0f, 0.0f, 1.0f));
+    reliefSearchPathFeatures(ray, 0, 0);
+    ASSERT_GE(reliefPathNearest.element, 0);
+    EXPECT_EQ(reliefPathRegions(ray, reliefPathNearest, pixel, vec2(0.0f, 0.02f)).count, 0)
+      << uv.x << " " << uv.y;
+  }
+  // the middle of the V's element, by contrast
+  const ReliefRay middle = Ray(vec2(0.4f, 0.3f), vec3(0.0f, 0.0f, 1.0f));
+  reliefSearchPathFeatures(middle, 0, 0);
+  EXPECT_GT(reliefPathRegions(middle, reliefPathNearest, pixel, vec2(0.0f, 0.02f)).count, 0);
+}

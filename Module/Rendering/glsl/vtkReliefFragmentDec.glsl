@@ -220,6 +220,47 @@ float reliefDiffuse(vec3 toLight)
   return cosine;
 }
 
+// The footprint's normals, weighted, as one: the normal VTK's lighting reads (specular).
+vec3 reliefFootprintMean(vec3 fallback)
+{
+  vec3 mean = vec3(0.0);
+  for (int k = 0; k < reliefFootprintCount; ++k)
+  {
+    mean += reliefFootprintWeights[k] * reliefFootprintNormals[k];
+  }
+  return dot(mean, mean) > 1e-12 ? normalize(mean) : fallback;
+}
+
+#ifdef RELIEF_PATH_FEATURES
+// Region sampling (the path-feature paper, s5.7): where the view ray passed near one
+// element alone, the footprint's regions across it (reliefPathRegions), each walked at its
+// middle through that element and weighted by its share of the pixel (one region: all of
+// the pixel sees what its centre sees); false, and nothing added, where the regions cannot
+// tell (an end, a profile that both cuts and adds, more than four regions).
+bool reliefPathShadeRegions(ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope,
+  vec3 centre, inout int samples)
+{
+  ReliefRay ray = reliefScreenViewRay(frame, fragment);
+  ReliefPathNearest nearest = reliefPathNearest;
+  ReliefPathRegions regions =
+    reliefPathRegions(ray, nearest, fragment.tcoordAlongX, fragment.tcoordAlongY);
+  if (regions.count == 1)
+  {
+    reliefAddFootprintNormal(centre, 1.0);
+  }
+  for (int r = 0; r < 4 && r < regions.count && regions.count > 1; ++r)
+  {
+    float offset = reliefPathEntry(regions.offsets, r);
+    ReliefRay regionRay = ray;
+    regionRay.origin += vec3(offset * regions.right, 0.0);
+    ReliefHit hit = reliefPathElementWalk(regionRay, nearest.element, nearest.near);
+    samples += hit.samples;
+    reliefAddFootprintNormal(reliefFieldNormal(uv, slope), reliefPathEntry(regions.weights, r));
+  }
+  return regions.count > 0;
+}
+#endif
+
 // Four points of a pixel, a rotated grid: no two share a row or a column, so that edges
 // near the pixels' axes are sampled at four offsets (Akenine-Moller, Haines and Hoffman,
 // Real-Time Rendering, 3rd ed. 2008, s5.6.2).
@@ -250,16 +291,18 @@ vec3 reliefShadeFootprint(
 #endif
 #ifdef RELIEF_PATH_FEATURES
   // path features have sharp edges at every scale: wherever a feature's reach comes within
-  // the footprint's rays of the view ray's path, the pixel is supersampled (the path-feature
-  // paper, s5.7, judged as it does on the cells the view ray passed), its normals and
-  // materials mixed; elsewhere every footprint ray would meet the plain base, at any size
-  float footprintReach = 0.0;
-  for (int k = 0; k < 4; ++k)
+  // the pixel of the view ray's path (judged, as the path-feature paper does, s5.7, on the
+  // cells the view ray passed), the pixel is antialiased: region sampled where one element
+  // alone is that near, supersampled elsewhere (intersections, ends), its normals and
+  // materials mixed; otherwise all of the pixel would meet the plain base, at any size
+  float footprintReach = 0.5 * max(length(fragment.tcoordAlongX + fragment.tcoordAlongY),
+    length(fragment.tcoordAlongX - fragment.tcoordAlongY));
+  searched = reliefFootprintShading == 1 && reliefPathNearest.gap <= footprintReach ? 1.0 : 0.0;
+  if (searched > 0.0 && reliefPathNearest.second > footprintReach &&
+    reliefPathShadeRegions(frame, fragment, uv, slope, centre, samples))
   {
-    footprintReach = max(footprintReach, length(reliefRotatedGrid[k].x * fragment.tcoordAlongX +
-      reliefRotatedGrid[k].y * fragment.tcoordAlongY));
+    return reliefFootprintMean(centre);
   }
-  searched = reliefFootprintShading == 1 && reliefPathClearance <= footprintReach ? 1.0 : 0.0;
 #endif
   if (searched < 1.0)
   {
@@ -288,12 +331,7 @@ vec3 reliefShadeFootprint(
   {
     reliefAddFootprintNormal(centre, searched); // no quarter's ray met the field
   }
-  vec3 mean = vec3(0.0);
-  for (int k = 0; k < reliefFootprintCount; ++k)
-  {
-    mean += reliefFootprintWeights[k] * reliefFootprintNormals[k];
-  }
-  return dot(mean, mean) > 1e-12 ? normalize(mean) : centre;
+  return reliefFootprintMean(centre);
 }
 
 //VTK::Relief::TCoordAtHit

@@ -30,9 +30,52 @@
 
 vec3 reliefPathHitNormal;
 float reliefPathHitMaterial;
-// How close the last walk came to any feature, in (u, v): the least reliefPathGap of the
-// elements listed where it passed below a cell's top; 1e30 where none.
-float reliefPathClearance;
+
+// The element a ray came closest to, and how close it and any other came, in (u, v): the
+// least reliefPathGap of the elements listed where it passed below a cell's top; 1e30
+// where none.
+struct ReliefPathNearest
+{
+  float gap;
+  int element; // its data texel; -1 where none
+  vec2 near;   // where the ray passed it (the copy of the tile it is in)
+  float second; // the least gap of the other elements
+};
+
+ReliefPathNearest reliefPathNoneNear()
+{
+  ReliefPathNearest nearest;
+  nearest.gap = 1e30f;
+  nearest.element = -1;
+  nearest.near = vec2(0.0f, 0.0f);
+  nearest.second = 1e30f;
+  return nearest;
+}
+
+// `nearest` with element's gap near `near` counted (-1: an element other than nearest's)
+ReliefPathNearest reliefPathNearer(ReliefPathNearest nearest, float gap, int element, vec2 near)
+{
+  if (element >= 0 && element == nearest.element)
+  {
+    nearest.near = gap < nearest.gap ? near : nearest.near;
+    nearest.gap = min(nearest.gap, gap);
+  }
+  else if (gap < nearest.gap)
+  {
+    nearest.second = nearest.gap;
+    nearest.gap = gap;
+    nearest.element = element;
+    nearest.near = near;
+  }
+  else
+  {
+    nearest.second = min(nearest.second, gap);
+  }
+  return nearest;
+}
+
+// The nearest of the last walk.
+ReliefPathNearest reliefPathNearest;
 
 // One element, placed in the copy of the tile the walk is in.
 struct ReliefPathElement
@@ -165,10 +208,21 @@ int reliefPathElementClass(ReliefPathElement element, vec3 point, float base)
   return inside % 2 == 1 ? 1 : (inside >= 2 ? 2 : 0);
 }
 
-// Component `slot` of a texel of a cell's list.
+// Component `slot` of a texel.
 float reliefPathEntry(vec4 entries, int slot)
 {
   return slot == 0 ? entries.x : (slot == 1 ? entries.y : (slot == 2 ? entries.z : entries.w));
+}
+
+// The data texel of element k of a cell's list, four a texel; a list of -e is element e
+// alone.
+int reliefPathListed(int list, int k)
+{
+  if (list < 0)
+  {
+    return -list;
+  }
+  return int(reliefPathEntry(RELIEF_PATH_TEXEL(list + k / 4), k - 4 * (k / 4)));
 }
 
 // The next crossing of a surface after `after`, with its normal and material.
@@ -454,14 +508,14 @@ ReliefPathEvent reliefPathElementEvents(
 
 // Where the ray, within one cell from tFrom to tTo, first passes from air into matter
 // (intoMatter) or from matter into air, with the normal and material of the surface
-// crossed there; t = -1 where it does not. `gap` is the least reliefPathGap of the cell's
-// elements, `samples` the element tests.
+// crossed there; t = -1 where it does not. `nearest` counts the cell's elements' gaps
+// along the ray up to there, `samples` the element tests.
 struct ReliefPathTransition
 {
   float t;
   vec3 normal;
   float material;
-  float gap;
+  ReliefPathNearest nearest;
   int samples;
 };
 
@@ -480,27 +534,27 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   result.t = -1.0f;
   result.normal = vec3(0.0f, 0.0f, 1.0f);
   result.material = -1.0f;
-  result.gap = 1e30f;
+  result.nearest = reliefPathNoneNear();
   result.samples = count;
   float tBase = ray.direction.z != 0.0f ? (base - ray.origin.z) / ray.direction.z : -1e30f;
-  // the ray's path up to the base, where most rays stop: its gap is the one that counts
-  // for a transition there (the footprint's rays differ only where the view ray's path
+  // the ray's path up to the base, where most rays stop: its gaps are the ones that
+  // count for a transition there (the footprint's rays differ only where the view ray's path
   // up to its transition passes near a feature)
   float tToBase = clamp(tBase, tFrom, tTo);
-  float gapToBase = 1e30f;
+  ReliefPathNearest nearestToBase = reliefPathNoneNear();
   tBase = tBase > tFrom + 1e-6f && tBase < tTo ? tBase : tTo;
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
   {
-    vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
-    ReliefPathElement element =
-      reliefPathElement(int(reliefPathEntry(entries, k - 4 * (k / 4))), near);
+    int texel = reliefPathListed(list, k);
+    ReliefPathElement element = reliefPathElement(texel, near);
     priority[k] = element.priority;
     next[k] = tTo;
     nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
     kind[k] = -1;
     float gap = reliefPathGap(element, ray, tFrom, tTo);
-    result.gap = min(result.gap, gap);
-    gapToBase = min(gapToBase, reliefPathGap(element, ray, tFrom, tToBase));
+    result.nearest = reliefPathNearer(result.nearest, gap, texel, near);
+    nearestToBase = reliefPathNearer(
+      nearestToBase, reliefPathGap(element, ray, tFrom, tToBase), texel, near);
     if (gap <= 0.0f)
     {
       ReliefPathEvent first;
@@ -547,7 +601,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       bool matter = held ? !cut : ray.origin.z + 0.5f * (t + tNext) * ray.direction.z >= base;
       if (matter == intoMatter)
       {
-        result.gap = t <= tToBase ? gapToBase : result.gap;
+        result.nearest = t <= tToBase ? nearestToBase : result.nearest;
         result.t = t;
         result.normal = normal;
         result.material = material;
@@ -569,9 +623,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       {
         if (kind[k] >= 0)
         {
-          vec4 entries = RELIEF_PATH_TEXEL(list + k / 4);
-          ReliefPathElement element =
-            reliefPathElement(int(reliefPathEntry(entries, k - 4 * (k / 4))), near);
+          ReliefPathElement element = reliefPathElement(reliefPathListed(list, k), near);
           kind[k] = reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + next[k])), base);
         }
       }
@@ -579,9 +631,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     }
     else
     {
-      vec4 entries = RELIEF_PATH_TEXEL(list + j / 4);
-      ReliefPathElement element =
-        reliefPathElement(int(reliefPathEntry(entries, j - 4 * (j / 4))), near);
+      ReliefPathElement element = reliefPathElement(reliefPathListed(list, j), near);
       normal = nextNormal[j];
       material = element.material;
       ReliefPathEvent following;
@@ -597,6 +647,20 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     }
   }
   return result;
+}
+
+// A walk's hit at tHit (a miss at tEnd where tHit < 0), its normal facing back along the
+// ray, out of the matter it enters.
+ReliefHit reliefPathHit(
+  ReliefRay ray, float tStart, float tEnd, float tHit, vec3 normal, float material, int samples)
+{
+  float facing = dot(normal, ray.direction);
+  reliefPathHitNormal = facing > 0.0f ? -normal : normal;
+  reliefPathHitMaterial = material;
+  bool found = tHit >= 0.0f;
+  float t = found ? tHit : tEnd;
+  float back = min(1e-3f / max(ray.direction.z, 1e-6f), 0.5f * (t - tStart));
+  return reliefHitAt(ray, t, found ? max(tStart, t - back) : t, found, samples);
 }
 
 // The path-feature walk of a straight ray from tStart to tEnd; the first entry into solid
@@ -620,7 +684,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   float tHit = -1.0f;
   vec3 normal = vec3(0.0f, 0.0f, 1.0f);
   float material = -1.0f;
-  float clearance = 1e30f;
+  ReliefPathNearest nearest = reliefPathNoneNear();
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && tHit < 0.0f; ++i)
   {
     vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
@@ -635,7 +699,10 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
       ReliefPathTransition entry = reliefPathCellTransition(
         ray, int(cellTexel.x), count, centre, base, tIn, tOut, true);
       samples += entry.samples;
-      clearance = min(clearance, entry.gap);
+      // the cell's second is another element than its nearest, and so counted exactly
+      nearest = reliefPathNearer(
+        nearest, entry.nearest.gap, entry.nearest.element, entry.nearest.near);
+      nearest = reliefPathNearer(nearest, entry.nearest.second, -1, centre);
       if (entry.t >= 0.0f)
       {
         tHit = entry.t;
@@ -657,15 +724,8 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
     }
     tIn = tOut;
   }
-  // the normal faces back along the ray, out of the matter it enters
-  float facing = dot(normal, ray.direction);
-  reliefPathHitNormal = facing > 0.0f ? -normal : normal;
-  reliefPathHitMaterial = material;
-  reliefPathClearance = clearance;
-  bool found = tHit >= 0.0f;
-  float t = found ? tHit : tEnd;
-  float back = min(1e-3f / max(ray.direction.z, 1e-6f), 0.5f * (t - tStart));
-  return reliefHitAt(ray, t, found ? max(tStart, t - back) : t, found, samples);
+  reliefPathNearest = nearest;
+  return reliefPathHit(ray, tStart, tEnd, tHit, normal, material, samples);
 }
 
 // The path-feature search as a relief search: the view ray down to the deepest cut.
@@ -675,6 +735,182 @@ ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinemen
   float deepest = header.y;
   float tEnd = (deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f;
   return reliefPathWalk(ray, 0.0f, max(tEnd, 1e-4f));
+}
+
+// The walk through one element alone (its data texel; its copy of the tile nearest to
+// `near`), from depth 0 to the deepest cut.
+ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
+{
+  vec4 header = RELIEF_PATH_TEXEL(0);
+  float base = header.x;
+  float tEnd = max((header.y - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f, 1e-4f);
+  ReliefPathTransition entry =
+    reliefPathCellTransition(ray, -element, 1, near, base, 0.0f, tEnd, true);
+  return reliefPathHit(ray, 0.0f, tEnd, entry.t, entry.normal, entry.material, entry.samples);
+}
+
+// Region sampling (s5.7). Where a pixel's footprint meets one straight element alone, what
+// each of its rays sees depends on one number: where the ray crosses the base, across the
+// element. It changes only where a profile point, or a point where the profile meets the
+// base, projects along the rays; between two such points one ray tells the surface, weighed
+// by the share of the pixel there. Spread across the element, the pixel (tcoord per pixel
+// along x and y, a parallelogram) is the sum of two boxes: a trapezoid. The regions are up
+// to four offsets across (in (u, v), along `right`) with their weights, for the nearest
+// element of the view ray's walk (reliefPathNearest); none where the
+// rays pass an end of the element, where the profile both cuts and adds (the wall up from
+// its opening would change what is seen between those points) or where more than four.
+struct ReliefPathRegions
+{
+  int count;
+  vec4 offsets;
+  vec4 weights;
+  vec2 right;
+};
+
+// The share of a sum of two centred boxes, of widths a and b, below s.
+float reliefPathBoxesBelow(float s, float a, float b)
+{
+  float wide = max(a, b);
+  if (!(wide > 1e-12f))
+  {
+    return s >= 0.0f ? 1.0f : 0.0f;
+  }
+  float narrow = max(min(a, b), 1e-3f * wide);
+  float outer = 0.5f * (wide + narrow);
+  float inner = 0.5f * (wide - narrow);
+  float r0 = max(s + outer, 0.0f);
+  float r1 = max(s + inner, 0.0f);
+  float r2 = max(s - inner, 0.0f);
+  float r3 = max(s - outer, 0.0f);
+  return clamp((r0 * r0 - r1 * r1 - r2 * r2 + r3 * r3) / (2.0f * wide * narrow), 0.0f, 1.0f);
+}
+
+ReliefPathRegions reliefPathRegions(
+  ReliefRay ray, ReliefPathNearest nearest, vec2 alongX, vec2 alongY)
+{
+  ReliefPathRegions regions;
+  regions.count = 0;
+  regions.offsets = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.weights = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.right = vec2(0.0f, 0.0f);
+  if (!(ray.direction.z > 1e-6f))
+  {
+    return regions;
+  }
+  float base = RELIEF_PATH_TEXEL(0).x;
+  vec3 atBase = reliefRayAt(ray, (base - ray.origin.z) / ray.direction.z);
+  ReliefPathElement element = reliefPathElement(nearest.element, nearest.near);
+  regions.right = element.right;
+  // the view ray's base crossing, and how its rays move across and along per depth
+  vec2 fromStart = vec2(atBase.x, atBase.y) - element.start;
+  float across = dot(fromStart, element.right);
+  float along = dot(fromStart, element.axis);
+  vec2 direction = vec2(ray.direction.x, ray.direction.y);
+  float slantAcross = dot(direction, element.right) / ray.direction.z;
+  float slantAlong = dot(direction, element.axis) / ray.direction.z;
+  float widthX = abs(dot(alongX, element.right));
+  float widthY = abs(dot(alongY, element.right));
+  float halfAcross = 0.5f * (widthX + widthY);
+  float halfAlong = 0.5f * (abs(dot(alongX, element.axis)) + abs(dot(alongY, element.axis)));
+  // beside the straight part wherever the rays come within reach, from depth 0 down
+  float largest = max(element.scaleStart, element.scaleEnd);
+  float reach = element.halfWidth * element.extent * largest + halfAcross;
+  float top = ray.origin.z;
+  float bottom = base + max(element.bottom, 0.0f) * largest;
+  if (abs(slantAcross) > 1e-9f)
+  {
+    float d0 = base + (-reach - across) / slantAcross;
+    float d1 = base + (reach - across) / slantAcross;
+    top = max(top, min(d0, d1));
+    bottom = min(bottom, max(d0, d1));
+  }
+  else if (abs(across) > reach)
+  {
+    bottom = top - 1.0f;
+  }
+  if (top <= bottom)
+  {
+    float along0 = along + (top - base) * slantAlong;
+    float along1 = along + (bottom - base) * slantAlong;
+    if (min(along0, along1) < halfAlong || max(along0, along1) > element.span - halfAlong)
+    {
+      return regions;
+    }
+  }
+  // the points where what the rays see changes, within the footprint, in order
+  float scale = mix(element.scaleStart, element.scaleEnd, clamp(along / element.span, 0.0f, 1.0f));
+  float breaks[3];
+  int breakCount = 0;
+  bool adds = false;
+  bool cuts = false;
+  vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
+  vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  vec4 pair = last;
+  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points && breakCount <= 3; ++k)
+  {
+    bool first = k % 2 == 0;
+    pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    adds = adds || point.y < 0.0f;
+    cuts = cuts || point.y > 0.0f;
+    // the point, and where the segment to it crosses the base
+    bool crosses = point.y != 0.0f && previous.y != 0.0f && (point.y > 0.0f) != (previous.y > 0.0f);
+    float meets = crosses ? point.x - point.y * (previous.x - point.x) / (previous.y - point.y) : 0.0f;
+    for (int m = 0; m < 2 && (m == 0 || crosses); ++m)
+    {
+      float at = m == 0 ? scale * (element.halfWidth * point.x - point.y * slantAcross) - across
+                        : scale * element.halfWidth * meets - across;
+      bool known = false;
+      for (int j = 0; j < 3 && j < breakCount; ++j)
+      {
+        known = known || abs(breaks[j] - at) <= 1e-6f * halfAcross;
+      }
+      if (abs(at) < halfAcross && !known)
+      {
+        // kept in order; a fourth ends region sampling
+        int slot = breakCount;
+        for (int j = 2; j >= 0; --j)
+        {
+          if (j < breakCount && breakCount < 3 && breaks[j] > at)
+          {
+            breaks[j + 1] = breaks[j];
+            slot = j;
+          }
+        }
+        if (slot < 3)
+        {
+          breaks[slot] = at;
+        }
+        breakCount += 1;
+      }
+    }
+    previous = point;
+  }
+  if (breakCount > 3 || (adds && cuts))
+  {
+    return regions;
+  }
+  float low = -halfAcross;
+  float below = 0.0f;
+  for (int r = 0; r <= breakCount; ++r)
+  {
+    float high = r < breakCount ? breaks[r] : halfAcross;
+    float share = r < breakCount ? reliefPathBoxesBelow(high, widthX, widthY) : 1.0f;
+    float middle = 0.5f * (low + high);
+    float weight = share - below;
+    regions.offsets.x = r == 0 ? middle : regions.offsets.x;
+    regions.offsets.y = r == 1 ? middle : regions.offsets.y;
+    regions.offsets.z = r == 2 ? middle : regions.offsets.z;
+    regions.offsets.w = r == 3 ? middle : regions.offsets.w;
+    regions.weights.x = r == 0 ? weight : regions.weights.x;
+    regions.weights.y = r == 1 ? weight : regions.weights.y;
+    regions.weights.z = r == 2 ? weight : regions.weights.z;
+    regions.weights.w = r == 3 ? weight : regions.weights.w;
+    low = high;
+    below = share;
+  }
+  regions.count = breakCount + 1;
+  return regions;
 }
 
 // Self-shadowing (s5.6): the same walk along the light ray, from where it enters the
@@ -691,10 +927,10 @@ float reliefPathLightVisibility(vec3 clearPoint, vec3 lightDirection)
   }
   vec3 hitNormal = reliefPathHitNormal;
   float hitMaterial = reliefPathHitMaterial;
-  float hitClearance = reliefPathClearance;
+  ReliefPathNearest hitNearest = reliefPathNearest;
   ReliefHit blocked = reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f);
   reliefPathHitNormal = hitNormal;
   reliefPathHitMaterial = hitMaterial;
-  reliefPathClearance = hitClearance;
+  reliefPathNearest = hitNearest;
   return blocked.hit && blocked.t < 1.0f ? 0.0f : 1.0f;
 }
