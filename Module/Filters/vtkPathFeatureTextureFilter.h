@@ -88,8 +88,10 @@ public:
   static constexpr int CellCapacity = 32;
   /// The most points of a profile the shader reads; longer ones are thinned, with a warning.
   static constexpr int MaximumProfilePoints = 64;
-  /// Texels per row of the data texture.
-  static constexpr int DataWidth = 1024;
+  /// Texels per row of the data texture: 2^DataWidthBits, so that the shader finds a
+  /// texel's row and column by shifting (an integer division is slow on CPU rasterizers).
+  static constexpr int DataWidthBits = 10;
+  static constexpr int DataWidth = 1 << DataWidthBits;
   /// The largest grid the filter makes on its own, per axis.
   static constexpr int MaximumAutomaticResolution = 512;
   /// Segments longer than this, in tiles, are split, so that a cell finds its copy of an

@@ -16,6 +16,8 @@
 #include "vtkReliefPathSearch.h"
 #include "vtkReliefSearch.h"
 
+#include <string>
+
 vtkStandardNewMacro(vtkOpenGLPathFeatureMapper);
 
 vtkOpenGLPathFeatureMapper::vtkOpenGLPathFeatureMapper()
@@ -81,7 +83,6 @@ bool vtkOpenGLPathFeatureMapper::UpdateReliefTexture(vtkRenderer* ren)
   {
     return false;
   }
-  this->DataWidth = data->GetDimensions()[0];
   this->UploadedTime = made;
   this->UploadedWindow = window;
   return true;
@@ -129,7 +130,6 @@ void vtkOpenGLPathFeatureMapper::SetReliefTextureParameters(vtkShaderProgram* pr
 {
   program->SetUniformi("reliefPathGrid", this->GridTexture->GetTextureUnit());
   program->SetUniformi("reliefPathData", this->DataTexture->GetTextureUnit());
-  program->SetUniformi("reliefPathDataWidth", this->DataWidth);
   // the footprint is measured in grid cells, each about a feature wide
   const int* cells = this->PathFeatureTextureFilter->GetResolutionUsed();
   const float size[2] = { static_cast<float>(cells[0]), static_cast<float>(cells[1]) };
@@ -138,7 +138,9 @@ void vtkOpenGLPathFeatureMapper::SetReliefTextureParameters(vtkShaderProgram* pr
 
 std::string vtkOpenGLPathFeatureMapper::GetSearchDefines()
 {
-  return "#define RELIEF_PATH_FEATURES\n#define RELIEF_SEARCH reliefSearchPathFeatures\n";
+  return "#define RELIEF_PATH_FEATURES\n#define RELIEF_SEARCH reliefSearchPathFeatures\n"
+         "#define RELIEF_PATH_DATA_WIDTH_BITS " +
+    std::to_string(vtkPathFeatureTextureFilter::DataWidthBits) + "\n";
 }
 
 std::string vtkOpenGLPathFeatureMapper::GetSearchSource()

@@ -80,7 +80,6 @@ protected:
   vtkNew<vtkTextureObject> DataTexture;
   vtkMTimeType UploadedTime = 0; // of the filter's outputs
   vtkOpenGLRenderWindow* UploadedWindow = nullptr; // compared by address only
-  int DataWidth = 1;
 
 private:
   vtkOpenGLPathFeatureMapper(const vtkOpenGLPathFeatureMapper&) = delete;

@@ -21,10 +21,10 @@ uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative de
 uniform mat4 reliefVCDCMatrix;
 #ifdef RELIEF_PATH_FEATURES
 uniform sampler2D reliefPathGrid; // vtkPathFeatureTextureFilter's grid, a texel per cell
-uniform sampler2D reliefPathData; // and its data, read as one array of texels
-uniform int reliefPathDataWidth;
+uniform sampler2D reliefPathData; // and its data, read as one array of texels, in rows of
+                                  // 2^RELIEF_PATH_DATA_WIDTH_BITS (or one shorter row)
 #define RELIEF_PATH_TEXEL(index) texelFetch(reliefPathData, \
-  ivec2((index) % reliefPathDataWidth, (index) / reliefPathDataWidth), 0)
+  ivec2((index) & ((1 << RELIEF_PATH_DATA_WIDTH_BITS) - 1), (index) >> RELIEF_PATH_DATA_WIDTH_BITS), 0)
 #define RELIEF_PATH_CELL(cell) \
   texelFetch(reliefPathGrid, ivec2(mod(cell, vec2(textureSize(reliefPathGrid, 0)))), 0)
 #endif

@@ -27,6 +27,9 @@
 #define RELIEF_PATH_CELL_CAPACITY 32
 #define RELIEF_PATH_PROFILE_POINTS 64
 #define RELIEF_PATH_EVENTS 96
+// A cut's opening is where its profile's inside lies this far below the base (a profile
+// point rounded to just below the base, sin(pi), opens no other wall than one at 0).
+#define RELIEF_PATH_OPENING 1e-6f
 
 vec3 reliefPathHitNormal;
 float reliefPathHitMaterial;
@@ -91,6 +94,7 @@ struct ReliefPathElement
   int profile;     // the profile's first point's texel
   int points;
   float extent;    // the most |x| of the profile
+  float top;       // its least y (above the base where negative)
   float bottom;    // its deepest y
   float material;
   float priority;
@@ -122,6 +126,7 @@ ReliefPathElement reliefPathElement(int texel, vec2 near)
   element.profile = int(path.y) + 1;
   element.points = min(int(profile.x), RELIEF_PATH_PROFILE_POINTS);
   element.extent = profile.y;
+  element.top = profile.z;
   element.bottom = profile.w;
   element.material = path.z;
   element.priority = path.w;
@@ -196,11 +201,10 @@ int reliefPathElementClass(ReliefPathElement element, vec3 point, float base)
   {
     return 0;
   }
-  float opening = 1e-6f;
   // below the base, the profile's inside is cut; above it, its inside is added, and above
   // its opening the cut goes on up
-  float y = profile.y >= 0.0f ? max(profile.y, opening) : profile.y;
-  int inside = reliefPathInsideProfile(element, profile.x, y, opening);
+  float y = profile.y >= 0.0f ? max(profile.y, RELIEF_PATH_OPENING) : profile.y;
+  int inside = reliefPathInsideProfile(element, profile.x, y, RELIEF_PATH_OPENING);
   if (profile.y >= 0.0f)
   {
     return inside % 2 == 1 ? 2 : 0;
@@ -294,59 +298,95 @@ bool reliefPathOnFacet(ReliefPathElement element, ReliefRay ray, float t, float 
   return lambda >= -1e-4f && lambda <= 1.0f + 1e-4f && apart <= 1e-3f;
 }
 
-// The first crossing after `after` of the ray with the element's facet p0-p1 and with the
-// wall up from where the facet meets the base (the cut's opening): on the straight part,
-// a linear function of t; on the revolved ends, a quadratic.
-ReliefPathEvent reliefPathFacetEvents(ReliefPathEvent best, ReliefPathElement element,
-  ReliefRay ray, float base, vec2 p0, vec2 p1, float after)
+// The ray as one element's straight part sees it: at t, in homogeneous profile
+// coordinates (across / half width, depth below the base, scale) = h0 + t h1, the profile
+// point (x, y) being (h.x, h.y) / h.z. The perturbation's scale is linear along the
+// element, so the ray stays a straight line in the profile's plane: `line` = h0 x h1, on
+// whose sides the profile's points lie, and which crosses a facet exactly where the
+// facet's two ends lie on its two sides (so that facets that share a point share its
+// side: no crossing is lost or counted twice where the ray passes a profile point).
+// along0 + t along1 is the distance along the element.
+struct ReliefPathSweep
 {
-  // the parts of the element the ray passes between `after` and the best crossing yet
-  vec2 start = vec2(ray.origin.x, ray.origin.y) - element.start;
-  float alongAfter = dot(start, element.axis) +
-    after * (ray.direction.x * element.axis.x + ray.direction.y * element.axis.y);
-  float alongBest = dot(start, element.axis) +
-    best.t * (ray.direction.x * element.axis.x + ray.direction.y * element.axis.y);
+  vec3 h0;
+  vec3 h1;
+  vec3 line;
+  float along0;
+  float along1;
+  float slope; // the scale's change per distance along
+};
+
+ReliefPathSweep reliefPathSweepOf(ReliefPathElement element, ReliefRay ray, float base)
+{
+  vec2 offset = vec2(ray.origin.x, ray.origin.y) - element.start;
+  vec2 run = vec2(ray.direction.x, ray.direction.y);
+  ReliefPathSweep sweep;
+  sweep.slope = (element.scaleEnd - element.scaleStart) / element.span;
+  sweep.along0 = dot(offset, element.axis);
+  sweep.along1 = dot(run, element.axis);
+  sweep.h0 = vec3(dot(offset, element.right) / element.halfWidth, ray.origin.z - base,
+    element.scaleStart + sweep.slope * sweep.along0);
+  sweep.h1 = vec3(
+    dot(run, element.right) / element.halfWidth, ray.direction.z, sweep.slope * sweep.along1);
+  sweep.line = cross(sweep.h0, sweep.h1);
+  return sweep;
+}
+
+// Which side of the sweep's line the profile point p lies on.
+bool reliefPathSide(ReliefPathSweep sweep, vec2 p)
+{
+  return sweep.line.x * p.x + sweep.line.y * p.y + sweep.line.z > 0.0f;
+}
+
+// Where the ray crosses the straight part's facet from a to b, whose ends lie on the two
+// sides of the sweep's line (s5.2): the facet's line F = (a, 1) x (b, 1) vanishes on
+// h0 + t h1. Kept where it is on the straight part, after `after` and before best.t, with
+// the gradient of F's function of (u, v, depth) as its normal.
+ReliefPathEvent reliefPathStraightCrossing(ReliefPathEvent best, ReliefPathElement element,
+  ReliefPathSweep sweep, vec2 a, vec2 b, float after)
+{
+  vec3 facet = cross(vec3(a.x, a.y, 1.0f), vec3(b.x, b.y, 1.0f));
+  float rate = dot(facet, sweep.h1);
+  if (rate == 0.0f)
+  {
+    return best;
+  }
+  float t = -dot(facet, sweep.h0) / rate;
+  float along = sweep.along0 + t * sweep.along1;
+  if (t > after && t < best.t && along >= 0.0f && along <= element.span &&
+    sweep.h0.z + t * sweep.h1.z > 0.0f)
+  {
+    vec2 across = (facet.x / element.halfWidth) * element.right +
+      (facet.z * sweep.slope) * element.axis;
+    best = reliefPathKeep(best, t, after, vec3(across.x, across.y, facet.y), element.material);
+  }
+  return best;
+}
+
+// The first crossing after `after` of the ray with the element's facet p0-p1 revolved
+// about its ends (a quadratic in t), where the ray passes beyond them before best.t.
+ReliefPathEvent reliefPathRevolvedEvents(ReliefPathEvent best, ReliefPathElement element,
+  ReliefPathSweep sweep, ReliefRay ray, float base, vec2 p0, vec2 p1, float after)
+{
+  float alongAfter = sweep.along0 + after * sweep.along1;
+  float alongBest = sweep.along0 + best.t * sweep.along1;
   float alongLow = min(alongAfter, alongBest);
   float alongHigh = max(alongAfter, alongBest);
   vec2 facet = p1 - p0;
-  if (dot(facet, facet) == 0.0f)
+  if ((alongLow >= 0.0f && alongHigh <= element.span) || dot(facet, facet) == 0.0f)
   {
-    return best; // a repeated point
+    return best; // the ray stays beside the straight part; a repeated point
   }
-  // the straight part: X = across, Y = depth below the base, S = scale, all linear in t;
-  // the facet is (Y - y0 S) fx - (X / w - x0 S) fy = 0
-  vec2 offset = vec2(ray.origin.x, ray.origin.y) - element.start;
   vec2 run = vec2(ray.direction.x, ray.direction.y);
-  float along0 = dot(offset, element.axis);
-  float along1 = dot(run, element.axis);
-  float across0 = dot(offset, element.right);
-  float across1 = dot(run, element.right);
-  float slope = (element.scaleEnd - element.scaleStart) / element.span;
-  float scale0 = element.scaleStart + slope * along0;
-  float scale1 = slope * along1;
   float depth0 = ray.origin.z - base;
   float depth1 = ray.direction.z;
   float w = element.halfWidth;
-  float c0 = (depth0 - p0.y * scale0) * facet.x - (across0 / w - p0.x * scale0) * facet.y;
-  float c1 = (depth1 - p0.y * scale1) * facet.x - (across1 / w - p0.x * scale1) * facet.y;
-  vec3 gradient = vec3(
-    -facet.y / w * element.right.x + (p0.x * facet.y - p0.y * facet.x) * slope * element.axis.x,
-    -facet.y / w * element.right.y + (p0.x * facet.y - p0.y * facet.x) * slope * element.axis.y,
-    facet.x);
-  if (c1 != 0.0f && alongHigh >= 0.0f && alongLow <= element.span)
-  {
-    float t = -c0 / c1;
-    if (t > after && t < best.t && reliefPathOnFacet(element, ray, t, base, p0, p1, 0.0f))
-    {
-      best = reliefPathKeep(best, t, after, gradient, element.material);
-    }
-  }
-  // the revolved ends: r^2 = (w s x)^2, x = x0 + fx (Y / s - y0) / fy along the facet
+  // r^2 = (w s x)^2, x = x0 + fx (Y / s - y0) / fy along the facet
   for (int end = -1; end <= 1; end += 2)
   {
     if ((end < 0 && alongLow >= 0.0f) || (end > 0 && alongHigh <= element.span))
     {
-      continue; // the ray stays beside the element's straight part
+      continue; // the ray stays this side of the end
     }
     vec2 centre = end < 0 ? element.start : element.end;
     float scale = end < 0 ? element.scaleStart : element.scaleEnd;
@@ -472,36 +512,38 @@ float reliefPathGap(ReliefPathElement element, ReliefRay ray, float t0, float t1
   return max(beside, max(before, beyond)) - reach;
 }
 
-// The crossings of the profile's segment from a to b (its facet, and where it meets the
-// base the wall up from the cut's opening, when the ray passes above the base).
-ReliefPathEvent reliefPathSegmentEvents(ReliefPathEvent best, ReliefPathElement element,
-  ReliefRay ray, float base, vec2 a, vec2 b, float after, bool aboveBase)
-{
-  best = reliefPathFacetEvents(best, element, ray, base, a, b, after);
-  if (aboveBase && (b.y > 0.0f) != (a.y > 0.0f))
-  {
-    float opening = b.x - b.y * (a.x - b.x) / (a.y - b.y);
-    best = reliefPathWallEvents(best, element, ray, base, opening, after);
-  }
-  return best;
-}
-
-// The first crossing after `after` and before best.t of the element's facets and walls.
+// The first crossing after `after` and before best.t of the element's facets (straight
+// and revolved about its ends) and of the walls up from its cuts' openings, where the ray
+// passes above the base.
 ReliefPathEvent reliefPathElementEvents(
   ReliefPathEvent best, ReliefPathElement element, ReliefRay ray, float base, float after)
 {
   bool aboveBase = min(ray.origin.z + after * ray.direction.z,
                      ray.origin.z + best.t * ray.direction.z) < base;
+  ReliefPathSweep sweep = reliefPathSweepOf(element, ray, base);
   vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
   vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  bool previousSide = reliefPathSide(sweep, previous);
   vec4 pair = last;
   for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
   {
     bool first = k % 2 == 0;
     pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
     vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
-    best = reliefPathSegmentEvents(best, element, ray, base, previous, point, after, aboveBase);
+    bool side = reliefPathSide(sweep, point);
+    if (side != previousSide)
+    {
+      best = reliefPathStraightCrossing(best, element, sweep, previous, point, after);
+    }
+    best = reliefPathRevolvedEvents(best, element, sweep, ray, base, previous, point, after);
+    if (aboveBase && (point.y > RELIEF_PATH_OPENING) != (previous.y > RELIEF_PATH_OPENING))
+    {
+      float opening = point.x +
+        (RELIEF_PATH_OPENING - point.y) * (previous.x - point.x) / (previous.y - point.y);
+      best = reliefPathWallEvents(best, element, ray, base, opening, after);
+    }
     previous = point;
+    previousSide = side;
   }
   return best;
 }
@@ -530,6 +572,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   vec3 nextNormal[RELIEF_PATH_CELL_CAPACITY];
   int kind[RELIEF_PATH_CELL_CAPACITY];
   float priority[RELIEF_PATH_CELL_CAPACITY];
+  bool mixes[RELIEF_PATH_CELL_CAPACITY];
   ReliefPathTransition result;
   result.t = -1.0f;
   result.normal = vec3(0.0f, 0.0f, 1.0f);
@@ -548,6 +591,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     int texel = reliefPathListed(list, k);
     ReliefPathElement element = reliefPathElement(texel, near);
     priority[k] = element.priority;
+    mixes[k] = element.top < 0.0f && element.bottom > 0.0f;
     next[k] = tTo;
     nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
     kind[k] = -1;
@@ -615,13 +659,15 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     t = tNext;
     if (j < 0)
     {
-      // the base plane: every element's state on from here
+      // the base plane: the state on from here of every element whose profile both cuts
+      // and adds (a cut's state is the same on both sides of its opening; an addition
+      // ends on the base where one of its facets lies, whose crossing tells its state)
       normal = vec3(0.0f, 0.0f, 1.0f);
       material = -1.0f;
       tBase = tTo;
       for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
       {
-        if (kind[k] >= 0)
+        if (kind[k] >= 0 && mixes[k])
         {
           ReliefPathElement element = reliefPathElement(reliefPathListed(list, k), near);
           kind[k] = reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + next[k])), base);
