@@ -764,6 +764,26 @@ std::vector<int> vtkPathFeatureTextureFilter::ListCells(std::vector<int>& offset
   return lists;
 }
 
+std::vector<int> vtkPathFeatureTextureFilter::StraightJoins() const
+{
+  const std::vector<Element>& elements = this->Internal->Elements;
+  const double straight = std::cos(StraightJointDegrees * M_PI / 180.0);
+  std::vector<int> joins(elements.size(), 0);
+  for (size_t e = 1; e < elements.size(); ++e)
+  {
+    const Element& previous = elements[e - 1];
+    const Element& element = elements[e];
+    if (previous.Path == element.Path &&
+      glm::dot(glm::normalize(previous.End - previous.Start),
+        glm::normalize(element.End - element.Start)) >= straight)
+    {
+      joins[e - 1] |= 2;
+      joins[e] |= 1;
+    }
+  }
+  return joins;
+}
+
 int vtkPathFeatureTextureFilter::ClassifyCell(
   const int* begin, const int* end, int cell, std::vector<int>& selfCrossing)
 {
@@ -913,11 +933,13 @@ void vtkPathFeatureTextureFilter::WriteTextures(const std::vector<int>& offsets,
       path.Material >= 0 ? materialTexels[path.Material] : -1.0, path.Priority);
     write(pathTexels[p] + 1, path.ScaleStart, path.ScaleEnd, path.Length, 0);
   }
+  const std::vector<int> joins = this->StraightJoins();
   for (size_t e = 0; e < internal.Elements.size(); ++e)
   {
     const Element& element = internal.Elements[e];
     write(elementTexels[e], element.Start.x, element.Start.y, element.End.x, element.End.y);
-    write(elementTexels[e] + 1, pathTexels[element.Path], element.ArcStart, element.ArcEnd, 0);
+    write(elementTexels[e] + 1, pathTexels[element.Path], element.ArcStart, element.ArcEnd,
+      joins[e]);
   }
 
   vtkNew<vtkFloatArray> cells;

@@ -51,8 +51,10 @@
  * - a path: (half width, profile texel, material texel or -1, priority),
  *   (scale at start, scale at end, length, 0);
  * - an element, a straight piece of a path: (start, end), (path texel, arc length along
- *   the path at its start, at its end, 0); a quadratic segment is stored as pieces whose
- *   chords stray at most 1/50 of the feature's half width from the curve;
+ *   the path at its start, at its end, joins: 1 where the path's previous element goes on
+ *   straight on from its start, + 2 where the next goes on from its end, StraightJointDegrees);
+ *   a quadratic segment is stored as pieces whose chords stray at most 1/50 of the
+ *   feature's half width from the curve;
  * - a cell's list: element texels, four per texel, -1 past the end.
  * Every element extends over the cells its width and profile reach, so that a cell never
  * needs its neighbours (s4.2). The work is linear in the number of elements and of the
@@ -97,6 +99,10 @@ public:
   /// Segments longer than this, in tiles, are split, so that a cell finds its copy of an
   /// element within half a tile.
   static constexpr double MaximumElementLength = 0.25;
+  /// Consecutive elements of a path that turn by at most this are one straight feature to
+  /// the antialiasing's region sampling (s5.7), whose rays may run along a feature far past
+  /// the pixel: the pieces of a split segment (MaximumElementLength), not a curve's.
+  static constexpr double StraightJointDegrees = 0.5;
 
   ///@{
   /// The paths (port 0) and the profiles (port 1, optional).
@@ -188,6 +194,8 @@ private:
   void ChooseResolution();
   /// Every cell's elements, in element order: cell c's are lists[offsets[c], offsets[c+1]).
   std::vector<int> ListCells(std::vector<int>& offsets);
+  /// Each element's joins with its path's neighbours (the data texture's layout).
+  std::vector<int> StraightJoins() const;
   /// 0 (empty), 1 (one path, no end) or 2 (crossings and ends); notes self-crossings.
   int ClassifyCell(const int* begin, const int* end, int cell, std::vector<int>& selfCrossing);
   void WriteTextures(const std::vector<int>& offsets, const std::vector<int>& lists,

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
 
 namespace
 {
@@ -218,6 +220,112 @@ TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
   }
 }
 
+namespace
+{
+// A pixel's footprint in (u, v), its ray, and what region sampling makes of it.
+struct Pixel
+{
+  vec2 UV;
+  vec3 Direction;
+  vec2 AlongX;
+  vec2 AlongY;
+};
+
+// A random pixel at uv: 0.004 to 0.03 across, rays up to 60 degrees from the normal.
+Pixel RandomPixel(vec2 uv, std::mt19937& random)
+{
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float angle = 6.2831853f * unit(random);
+  const float run = 1.7f * unit(random);
+  const float size = 0.004f + 0.026f * unit(random);
+  const float turn = 6.2831853f * unit(random);
+  Pixel pixel;
+  pixel.UV = uv;
+  pixel.Direction = vec3(run * std::cos(angle), run * std::sin(angle), 1.0f);
+  pixel.AlongX = size * vec2(std::cos(turn), std::sin(turn));
+  pixel.AlongY = size * (0.3f + 0.7f * unit(random)) *
+    vec2(-std::sin(turn + 0.4f * (unit(random) - 0.5f)), std::cos(turn));
+  return pixel;
+}
+
+// The regions of the pixel (none where they refuse) after its view ray's walk.
+ReliefPathRegions RegionsOf(const Pixel& pixel)
+{
+  const ReliefRay ray = Ray(pixel.UV, pixel.Direction);
+  reliefSearchPathFeatures(ray, 0, 0);
+  EXPECT_GE(reliefPathNearest.element, 0);
+  return reliefPathRegions(ray, reliefPathNearest, pixel.AlongX, pixel.AlongY);
+}
+
+// How far the share of the pixel that each surface takes in its regions (which must be
+// taken, RegionsOf) is from what 96 x 96 rays through the pixel see; the surfaces are
+// told apart by their normals.
+double RegionShareError(const Pixel& pixel)
+{
+  const ReliefRay ray = Ray(pixel.UV, pixel.Direction);
+  const ReliefPathRegions regions = RegionsOf(pixel);
+  const ReliefPathNearest nearest = reliefPathNearest;
+  std::vector<std::pair<vec3, double>> expected;
+  std::vector<std::pair<vec3, double>> got;
+  auto count = [](std::vector<std::pair<vec3, double>>& shares, double weight) {
+    const vec3 normal = normalize(reliefPathHitNormal);
+    for (auto& share : shares)
+    {
+      if (dot(share.first, normal) > 0.9999f)
+      {
+        share.second += weight;
+        return;
+      }
+    }
+    shares.emplace_back(normal, weight);
+  };
+  const int n = 96;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const float x = (i + 0.5f) / n - 0.5f;
+      const float y = (j + 0.5f) / n - 0.5f;
+      reliefSearchPathFeatures(
+        Ray(pixel.UV + x * pixel.AlongX + y * pixel.AlongY, pixel.Direction), 0, 0);
+      count(expected, 1.0 / (n * n));
+    }
+  }
+  double total = 0.0;
+  for (int r = 0; r < regions.count; ++r)
+  {
+    const float offset = reliefPathEntry(regions.offsets, r);
+    ReliefRay regionRay = ray;
+    regionRay.origin.x += offset * regions.right.x;
+    regionRay.origin.y += offset * regions.right.y;
+    reliefPathElementWalk(regionRay, nearest.element, nearest.near);
+    const float weight = reliefPathEntry(regions.weights, r);
+    EXPECT_GE(weight, 0.0f);
+    total += weight;
+    count(got, weight);
+  }
+  EXPECT_NEAR(total, 1.0, 1e-5);
+  double error = 0.0;
+  for (const auto& share : expected)
+  {
+    double region = 0.0;
+    for (const auto& other : got)
+    {
+      region += dot(other.first, share.first) > 0.9999f ? other.second : 0.0;
+    }
+    error = std::max(error, std::abs(region - share.second));
+  }
+  return error;
+}
+
+std::string Describe(const Pixel& pixel)
+{
+  return "pixel at " + std::to_string(pixel.UV.x) + " " + std::to_string(pixel.UV.y) + " of " +
+    std::to_string(length(pixel.AlongX)) + ", ray " + std::to_string(pixel.Direction.x) + " " +
+    std::to_string(pixel.Direction.y);
+}
+}
+
 // Region sampling (s5.7) against the pixel sampled densely: over one straight element of
 // each kind of profile (a V, a ridge, a dovetail's overhang, the default groove), pixels
 // of random size, shape and slant; each surface the dense rays see takes the share of the
@@ -238,78 +346,13 @@ TEST(ReliefPathSearch, RegionSamplingMatchesThePixelSampledDensely)
     int sampled = 0;
     for (int k = 0; k < 60; ++k)
     {
-      // across the groove and beside it, away from its ends; pixels 0.004 to 0.03 across,
-      // rays up to 60 degrees from the normal
-      const vec2 uv(0.36f + 0.08f * unit(random), 0.5f + 0.14f * (unit(random) - 0.5f));
-      const float angle = 6.2831853f * unit(random);
-      const float run = 1.7f * unit(random);
-      const vec3 direction(run * std::cos(angle), run * std::sin(angle), 1.0f);
-      const float size = 0.004f + 0.026f * unit(random);
-      const float turn = 6.2831853f * unit(random);
-      const vec2 alongX = size * vec2(std::cos(turn), std::sin(turn));
-      const vec2 alongY = size * (0.3f + 0.7f * unit(random)) *
-        vec2(-std::sin(turn + 0.4f * (unit(random) - 0.5f)), std::cos(turn));
-      const ReliefRay ray = Ray(uv, direction);
-      reliefSearchPathFeatures(ray, 0, 0);
-      const ReliefPathNearest nearest = reliefPathNearest;
-      ASSERT_GE(nearest.element, 0);
-      const ReliefPathRegions regions = reliefPathRegions(ray, nearest, alongX, alongY);
-      if (regions.count == 0)
+      // across the groove and beside it, away from its ends
+      const Pixel pixel = RandomPixel(
+        vec2(0.36f + 0.08f * unit(random), 0.5f + 0.14f * (unit(random) - 0.5f)), random);
+      if (RegionsOf(pixel).count > 0)
       {
-        continue;
-      }
-      sampled += 1;
-      // the surfaces seen, told apart by their normals, and the share of each
-      std::vector<std::pair<vec3, double>> expected;
-      std::vector<std::pair<vec3, double>> got;
-      auto count = [](std::vector<std::pair<vec3, double>>& shares, double weight) {
-        const vec3 normal = normalize(reliefPathHitNormal);
-        for (auto& share : shares)
-        {
-          if (dot(share.first, normal) > 0.9999f)
-          {
-            share.second += weight;
-            return;
-          }
-        }
-        shares.emplace_back(normal, weight);
-      };
-      const int n = 96;
-      for (int i = 0; i < n; ++i)
-      {
-        for (int j = 0; j < n; ++j)
-        {
-          const float x = (i + 0.5f) / n - 0.5f;
-          const float y = (j + 0.5f) / n - 0.5f;
-          reliefSearchPathFeatures(Ray(uv + x * alongX + y * alongY, direction), 0, 0);
-          count(expected, 1.0 / (n * n));
-        }
-      }
-      double total = 0.0;
-      for (int r = 0; r < regions.count; ++r)
-      {
-        const float offset = reliefPathEntry(regions.offsets, r);
-        ReliefRay regionRay = ray;
-        regionRay.origin.x += offset * regions.right.x;
-        regionRay.origin.y += offset * regions.right.y;
-        reliefPathElementWalk(regionRay, nearest.element, nearest.near);
-        const float weight = reliefPathEntry(regions.weights, r);
-        EXPECT_GE(weight, 0.0f);
-        total += weight;
-        count(got, weight);
-      }
-      EXPECT_NEAR(total, 1.0, 1e-5);
-      for (const auto& share : expected)
-      {
-        double region = 0.0;
-        for (const auto& other : got)
-        {
-          region += dot(other.first, share.first) > 0.9999f ? other.second : 0.0;
-        }
-        EXPECT_NEAR(region, share.second, 0.02)
-          << "normal " << share.first.x << " " << share.first.y << " " << share.first.z
-          << ", pixel at " << uv.x << " " << uv.y << " of " << size << ", ray " << direction.x
-          << " " << direction.y;
+        sampled += 1;
+        EXPECT_LE(RegionShareError(pixel), 0.02) << Describe(pixel);
       }
     }
     EXPECT_GE(sampled, 30); // most: the others see past an end along slanting rays
@@ -321,17 +364,56 @@ TEST(ReliefPathSearch, RegionSamplingMatchesThePixelSampledDensely)
   scene.Paths.push_back({ { { 0.3, 0.3 }, { 0.5, 0.3 } }, 0.1, 0 });
   scene.Paths.push_back({ { { 0.3, 0.7 }, { 0.5, 0.7 } }, 0.1, 1 });
   Built built(scene);
-  const vec2 pixel(0.02f, 0.0f);
+  const vec2 across(0.02f, 0.0f);
+  const vec2 along(0.0f, 0.02f);
   for (const vec2& uv : { vec2(0.29f, 0.3f), vec2(0.505f, 0.31f), vec2(0.4f, 0.7f) })
   {
-    const ReliefRay ray = Ray(uv, vec3(0.0f, 0.0f, 1.0f));
-    reliefSearchPathFeatures(ray, 0, 0);
-    ASSERT_GE(reliefPathNearest.element, 0);
-    EXPECT_EQ(reliefPathRegions(ray, reliefPathNearest, pixel, vec2(0.0f, 0.02f)).count, 0)
+    EXPECT_EQ(RegionsOf({ uv, vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0)
       << uv.x << " " << uv.y;
   }
   // the middle of the V's element, by contrast
-  const ReliefRay middle = Ray(vec2(0.4f, 0.3f), vec3(0.0f, 0.0f, 1.0f));
-  reliefSearchPathFeatures(middle, 0, 0);
-  EXPECT_GT(reliefPathRegions(middle, reliefPathNearest, pixel, vec2(0.0f, 0.02f)).count, 0);
+  EXPECT_GT(RegionsOf({ vec2(0.4f, 0.3f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
+}
+
+// Where a path goes on straight from one element to the next (a segment split into
+// pieces, MaximumElementLength), the regions take it as one element across the joint; at
+// a bend of 6 degrees (a curve's pieces turn by as much), as at a corner or an end, they
+// refuse: the rays run along the feature as they descend, past the bend by more than the
+// pixel.
+TEST(ReliefPathSearch, RegionSamplingGoesOnThroughStraightJoints)
+{
+  std::mt19937 random(58);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  Scene scene;
+  scene.Profiles = { VGroove };
+  // split at 0.3, 0.5 and 0.7; bent by 6 degrees at (0.5, 0.7)
+  scene.Paths.push_back({ { { 0.1, 0.3 }, { 0.9, 0.3 } }, 0.1, 0 });
+  const double bend = 6.0 * M_PI / 180.0;
+  scene.Paths.push_back(
+    { { { 0.3, 0.7 }, { 0.5, 0.7 }, { 0.5 + 0.2 * std::cos(bend), 0.7 + 0.2 * std::sin(bend) } },
+      0.1, 0 });
+  Built built(scene);
+  for (const vec2 joint : { vec2(0.3f, 0.3f), vec2(0.5f, 0.3f), vec2(0.7f, 0.3f) })
+  {
+    int sampled = 0;
+    for (int k = 0; k < 40; ++k)
+    {
+      const vec2 offset(0.03f * (unit(random) - 0.5f), 0.12f * (unit(random) - 0.5f));
+      const Pixel pixel = RandomPixel(joint + offset, random);
+      if (RegionsOf(pixel).count > 0)
+      {
+        sampled += 1;
+        EXPECT_LE(RegionShareError(pixel), 0.02) << Describe(pixel);
+      }
+    }
+    EXPECT_GE(sampled, 30) << joint.x << " " << joint.y;
+  }
+  const vec2 across(0.0f, 0.02f);
+  const vec2 along(0.02f, 0.0f);
+  for (const vec2& uv : { vec2(0.3f, 0.3f), vec2(0.5f, 0.3f) })
+  {
+    EXPECT_GT(RegionsOf({ uv, vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
+  }
+  EXPECT_EQ(RegionsOf({ vec2(0.5f, 0.7f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
+  EXPECT_GT(RegionsOf({ vec2(0.4f, 0.7f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
 }

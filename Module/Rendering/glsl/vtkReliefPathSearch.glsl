@@ -36,11 +36,13 @@ float reliefPathHitMaterial;
 
 // The element a ray came closest to, and how close it and any other came, in (u, v): the
 // least reliefPathGap of the elements listed where it passed below a cell's top; 1e30
-// where none.
+// where none. The elements of its path that go on straight from it (its joins,
+// vtkPathFeatureTextureFilter::StraightJointDegrees) are one feature with it, not others.
 struct ReliefPathNearest
 {
   float gap;
   int element; // its data texel; -1 where none
+  int joins;   // 1: its path's previous element goes on from its start, 2: the next from its end
   vec2 near;   // where the ray passed it (the copy of the tile it is in)
   float second; // the least gap of the other elements
 };
@@ -50,24 +52,37 @@ ReliefPathNearest reliefPathNoneNear()
   ReliefPathNearest nearest;
   nearest.gap = 1e30f;
   nearest.element = -1;
+  nearest.joins = 0;
   nearest.near = vec2(0.0f, 0.0f);
   nearest.second = 1e30f;
   return nearest;
 }
 
-// `nearest` with element's gap near `near` counted (-1: an element other than nearest's)
-ReliefPathNearest reliefPathNearer(ReliefPathNearest nearest, float gap, int element, vec2 near)
+// `nearest` with element's gap near `near` counted (-1: an element other than nearest's).
+// The nearest element or one that goes on straight from it (the data's elements of a path
+// are two texels apart) takes its place where nearer, and is no second.
+ReliefPathNearest reliefPathNearer(
+  ReliefPathNearest nearest, float gap, int element, int joins, vec2 near)
 {
-  if (element >= 0 && element == nearest.element)
+  bool same = element >= 0 &&
+    (element == nearest.element || (element == nearest.element + 2 && (nearest.joins & 2) != 0) ||
+      (element == nearest.element - 2 && (nearest.joins & 1) != 0));
+  if (same)
   {
-    nearest.near = gap < nearest.gap ? near : nearest.near;
-    nearest.gap = min(nearest.gap, gap);
+    if (gap < nearest.gap)
+    {
+      nearest.gap = gap;
+      nearest.element = element;
+      nearest.joins = joins;
+      nearest.near = near;
+    }
   }
   else if (gap < nearest.gap)
   {
     nearest.second = nearest.gap;
     nearest.gap = gap;
     nearest.element = element;
+    nearest.joins = joins;
     nearest.near = near;
   }
   else
@@ -98,6 +113,7 @@ struct ReliefPathElement
   float bottom;    // its deepest y
   float material;
   float priority;
+  int joins;       // ReliefPathNearest's
 };
 
 ReliefPathElement reliefPathElement(int texel, vec2 near)
@@ -130,6 +146,7 @@ ReliefPathElement reliefPathElement(int texel, vec2 near)
   element.bottom = profile.w;
   element.material = path.z;
   element.priority = path.w;
+  element.joins = int(record.w);
   return element;
 }
 
@@ -227,6 +244,33 @@ int reliefPathListed(int list, int k)
     return -list;
   }
   return int(reliefPathEntry(RELIEF_PATH_TEXEL(list + k / 4), k - 4 * (k / 4)));
+}
+
+// The length of element `texel`.
+float reliefPathSpan(int texel)
+{
+  vec4 ends = RELIEF_PATH_TEXEL(texel);
+  return length(vec2(ends.z - ends.x, ends.w - ends.y));
+}
+
+// Element k of a cell's list, placed near `near`. Element e alone (a list of -e: region
+// sampling's walks, reliefPathElementWalk) goes on through its straight joins, as
+// far as the elements there reach, the perturbation's scale going on as along its path.
+ReliefPathElement reliefPathListedElement(int list, int k, vec2 near)
+{
+  ReliefPathElement element = reliefPathElement(reliefPathListed(list, k), near);
+  if (list < 0)
+  {
+    float before = (element.joins & 1) != 0 ? reliefPathSpan(-list - 2) : 0.0f;
+    float after = (element.joins & 2) != 0 ? reliefPathSpan(-list + 2) : 0.0f;
+    float slope = (element.scaleEnd - element.scaleStart) / element.span;
+    element.start -= before * element.axis;
+    element.end += after * element.axis;
+    element.scaleStart = max(element.scaleStart - slope * before, 0.0f);
+    element.scaleEnd = max(element.scaleEnd + slope * after, 0.0f);
+    element.span += before + after;
+  }
+  return element;
 }
 
 // The next crossing of a surface after `after`, with its normal and material.
@@ -589,16 +633,16 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
   {
     int texel = reliefPathListed(list, k);
-    ReliefPathElement element = reliefPathElement(texel, near);
+    ReliefPathElement element = reliefPathListedElement(list, k, near);
     priority[k] = element.priority;
     mixes[k] = element.top < 0.0f && element.bottom > 0.0f;
     next[k] = tTo;
     nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
     kind[k] = -1;
     float gap = reliefPathGap(element, ray, tFrom, tTo);
-    result.nearest = reliefPathNearer(result.nearest, gap, texel, near);
+    result.nearest = reliefPathNearer(result.nearest, gap, texel, element.joins, near);
     nearestToBase = reliefPathNearer(
-      nearestToBase, reliefPathGap(element, ray, tFrom, tToBase), texel, near);
+      nearestToBase, reliefPathGap(element, ray, tFrom, tToBase), texel, element.joins, near);
     if (gap <= 0.0f)
     {
       ReliefPathEvent first;
@@ -669,7 +713,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       {
         if (kind[k] >= 0 && mixes[k])
         {
-          ReliefPathElement element = reliefPathElement(reliefPathListed(list, k), near);
+          ReliefPathElement element = reliefPathListedElement(list, k, near);
           kind[k] = reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + next[k])), base);
         }
       }
@@ -677,7 +721,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     }
     else
     {
-      ReliefPathElement element = reliefPathElement(reliefPathListed(list, j), near);
+      ReliefPathElement element = reliefPathListedElement(list, j, near);
       normal = nextNormal[j];
       material = element.material;
       ReliefPathEvent following;
@@ -746,9 +790,9 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
         ray, int(cellTexel.x), count, centre, base, tIn, tOut, true);
       samples += entry.samples;
       // the cell's second is another element than its nearest, and so counted exactly
-      nearest = reliefPathNearer(
-        nearest, entry.nearest.gap, entry.nearest.element, entry.nearest.near);
-      nearest = reliefPathNearer(nearest, entry.nearest.second, -1, centre);
+      nearest = reliefPathNearer(nearest, entry.nearest.gap, entry.nearest.element,
+        entry.nearest.joins, entry.nearest.near);
+      nearest = reliefPathNearer(nearest, entry.nearest.second, -1, 0, centre);
       if (entry.t >= 0.0f)
       {
         tHit = entry.t;
@@ -784,7 +828,8 @@ ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinemen
 }
 
 // The walk through one element alone (its data texel; its copy of the tile nearest to
-// `near`), from depth 0 to the deepest cut.
+// `near`), on through its straight joins (reliefPathListedElement), from depth 0
+// to the deepest cut.
 ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
@@ -802,9 +847,10 @@ ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 // by the share of the pixel there. Spread across the element, the pixel (tcoord per pixel
 // along x and y, a parallelogram) is the sum of two boxes: a trapezoid. The regions are up
 // to four offsets across (in (u, v), along `right`) with their weights, for the nearest
-// element of the view ray's walk (reliefPathNearest); none where the
-// rays pass an end of the element, where the profile both cuts and adds (the wall up from
-// its opening would change what is seen between those points) or where more than four.
+// element of the view ray's walk (reliefPathNearest), on through its straight joins; none
+// where the rays pass an end of it that no element goes on straight from, where the
+// profile both cuts and adds (the wall up from its opening would change what is seen
+// between those points) or where more than four.
 struct ReliefPathRegions
 {
   int count;
@@ -845,7 +891,7 @@ ReliefPathRegions reliefPathRegions(
   }
   float base = RELIEF_PATH_TEXEL(0).x;
   vec3 atBase = reliefRayAt(ray, (base - ray.origin.z) / ray.direction.z);
-  ReliefPathElement element = reliefPathElement(nearest.element, nearest.near);
+  ReliefPathElement element = reliefPathListedElement(-nearest.element, 0, nearest.near);
   regions.right = element.right;
   // the view ray's base crossing, and how its rays move across and along per depth
   vec2 fromStart = vec2(atBase.x, atBase.y) - element.start;
