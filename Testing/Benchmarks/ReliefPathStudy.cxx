@@ -574,6 +574,13 @@ std::string Study(const Options& options)
     axes.X = "ms/frame";
     axes.Y = "colour RMSE against the supersampled geometry";
     axes.LogX = true;
+    // from 0, with room above the points for the legend
+    double largest = 0.0;
+    for (const ReliefChart::Series& one : series)
+    {
+      largest = std::max(largest, *std::max_element(one.Y.begin(), one.Y.end()));
+    }
+    axes.YRange[1] = 1.4 * largest;
     ReliefChart::Write(series, axes, options.ImageDirectory + "/path_features_error_cost.png");
     std::vector<const ReliefMetrics::Capture*> top;
     std::vector<const ReliefMetrics::Capture*> bottom;
