@@ -125,8 +125,13 @@ int main(int argc, char* argv[])
       [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeatures(w, 640, 480, 50.0); } },
     { "path_features_closeup", "the same close up and low: the slot's overhang, the bead",
       [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeaturesCloseUp(w, 640, 480); } },
-    { "engraved_cylinder", "a label engraved with a V-bit on a cylinder of 48 x 8 quads",
+    { "engraved_cylinder",
+      "a label engraved with a V-bit on a cylinder of 48 x 8 quads (the quadric frame)",
       [](vtkRenderWindow* w) { ReliefPathScene::ShowEngravedCylinder(w, 640, 480); } },
+    { "path_features_curved",
+      "grooves on a coarse cylinder: the tangent frame (left) keeps the polygons' outline, the "
+      "quadric frame (right) lets the grooves notch it",
+      [](vtkRenderWindow* w) { ReliefPathScene::ShowCurvedPathFeatures(w, 800, 400, 0.06); } },
     { "sample_count",
       "height samples per pixel, Automatic (the default), the view ray's search (blue 0, red 20)",
       [](vtkRenderWindow* w) {

@@ -22,18 +22,18 @@
  * settings and materials. The base surface lies GetBaseDepth() x DepthScale below the
  * polygons, so that what protrudes reaches them. Without paths the plain surface is drawn.
  * The search method of the superclass does not apply: the path search is the only one.
+ * On curved meshes vtkOpenGLQuadricPathFeatureMapper lets the features carve the outline.
  */
 #ifndef vtkOpenGLPathFeatureMapper_h
 #define vtkOpenGLPathFeatureMapper_h
 
-#include "vtkNew.h"           // For PathFeatureTextureFilter
-#include "vtkTextureObject.h" // For vtkNew
+#include "vtkNew.h" // For vtkNew
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkReliefRenderingModule.h" // For export macro
 
-class vtkOpenGLRenderWindow;
+class vtkAlgorithmOutput;
+class vtkOpenGLPathFeatureTextures;
 class vtkPathFeatureTextureFilter;
-
 
 class VTKRELIEFRENDERING_EXPORT vtkOpenGLPathFeatureMapper : public vtkOpenGLReliefMapper
 {
@@ -72,14 +72,8 @@ protected:
   std::string GetSearchDefines() override;
   std::string GetSearchSource() override;
   std::string GetHitColourCode() override;
-  /// Uploads `image`'s four float components to `texture` in the window's context.
-  bool Upload(vtkTextureObject* texture, vtkImageData* image, vtkOpenGLRenderWindow* window);
 
-  vtkNew<vtkPathFeatureTextureFilter> PathFeatureTextureFilter;
-  vtkNew<vtkTextureObject> GridTexture;
-  vtkNew<vtkTextureObject> DataTexture;
-  vtkMTimeType UploadedTime = 0; // of the filter's outputs
-  vtkOpenGLRenderWindow* UploadedWindow = nullptr; // compared by address only
+  vtkNew<vtkOpenGLPathFeatureTextures> PathFeatures;
 
 private:
   vtkOpenGLPathFeatureMapper(const vtkOpenGLPathFeatureMapper&) = delete;

@@ -21,6 +21,7 @@
 #include "vtkShaderProgram.h"
 
 #include <algorithm>
+#include <string>
 
 vtkStandardNewMacro(vtkOpenGLQuadricReliefMapper);
 
@@ -187,7 +188,9 @@ std::string vtkOpenGLQuadricReliefMapper::GetFrameSource()
 
 std::string vtkOpenGLQuadricReliefMapper::GetFrameDefines()
 {
-  return this->DistanceMode == EXACT ? "#define RELIEF_EXACT_DISTANCE\n" : "";
+  // the view ray bends below the quadric (ReliefRay::bend)
+  return std::string("#define RELIEF_CURVED_FRAME\n") +
+    (this->DistanceMode == EXACT ? "#define RELIEF_EXACT_DISTANCE\n" : "");
 }
 
 void vtkOpenGLQuadricReliefMapper::SetDistanceMode(int mode)

@@ -1,6 +1,8 @@
 """vtkOpenGLPathFeatureMapper from Python, in a VTK pipeline: a circle from
 vtkRegularPolygonSource is the path of a groove on a plane; the groove lies where the
-source says, follows the source when it changes, and takes its material's colour.
+source says, follows the source when it changes, and takes its material's colour. On a
+sphere, vtkOpenGLQuadricPathFeatureMapper lets a groove around its equator notch the
+outline.
 
 Run by ctest as: TestReliefPathFeaturesPython.py -D <Data dir> -T <temp dir>,
 with VTK's /usr/bin/python3 and PYTHONPATH set to the built vtkrelief package.
@@ -13,12 +15,15 @@ import numpy
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray
-from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkRegularPolygonSource
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkFiltersSources import (vtkPlaneSource, vtkRegularPolygonSource,
+                                          vtkTexturedSphereSource)
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
 
-from vtkrelief import vtkOpenGLPathFeatureMapper
+from vtkrelief import vtkOpenGLPathFeatureMapper, vtkOpenGLQuadricPathFeatureMapper
 
 parser = argparse.ArgumentParser()
 parser.add_argument("-D", dest="data", required=True)
@@ -114,6 +119,67 @@ class PathFeaturesInAPipeline(unittest.TestCase):
         plain = pixels[5, 5]
         self.assertGreater(int(groove[0]), 2 * int(groove[1]))  # red
         self.assertLess(abs(int(plain[0]) - int(plain[1])), 8)  # the actor's grey
+
+
+def equator_path():
+    """A line around a textured sphere's equator: v = 0.5, u from 0 to 1."""
+    points = vtkPoints()
+    points.InsertNextPoint(0.0, 0.5, 0.0)
+    points.InsertNextPoint(1.0, 0.5, 0.0)
+    lines = vtkCellArray()
+    lines.InsertNextCell(2)
+    lines.InsertCellPoint(0)
+    lines.InsertCellPoint(1)
+    path = vtkPolyData()
+    path.SetPoints(points)
+    path.SetLines(lines)
+    return path
+
+
+class PathFeaturesOnACurvedSurface(unittest.TestCase):
+    def outline_widths(self, mapper):
+        """Per row, how many pixels the sphere covers, seen from the side."""
+        sphere = vtkTexturedSphereSource()
+        sphere.SetThetaResolution(24)
+        sphere.SetPhiResolution(12)
+        mapper.SetInputConnection(sphere.GetOutputPort())
+        mapper.SetPathsData(equator_path())
+        mapper.GetPathFeatureTextureFilter().SetDefaultWidth(0.06)
+        mapper.SetDepthScale(0.08)
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        renderer = vtkRenderer()
+        renderer.AddActor(actor)
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetSize(SIZE, SIZE)
+        window.SetMultiSamples(0)
+        window.AddRenderer(renderer)
+        camera = renderer.GetActiveCamera()
+        camera.ParallelProjectionOn()
+        camera.SetFocalPoint(0, 0, 0)
+        camera.SetPosition(0, -3, 0)
+        camera.SetViewUp(0, 0, 1)
+        camera.SetParallelScale(0.6)
+        renderer.ResetCameraClippingRange()
+        window.Render()
+        values = vtkFloatArray()
+        window.GetZbufferData(0, 0, SIZE - 1, SIZE - 1, values)
+        window.Finalize()
+        covered = vtk_to_numpy(values).reshape(SIZE, SIZE) < 1.0
+        return covered.sum(axis=1)
+
+    def test_groove_notches_the_outline(self):
+        flat = self.outline_widths(vtkOpenGLPathFeatureMapper())
+        curved = self.outline_widths(vtkOpenGLQuadricPathFeatureMapper())
+        middle = SIZE // 2
+        # the equator's row and rows a little above and below, beside the groove
+        near = [middle - 12, middle + 12]
+        # the quadric frame cuts the groove out of the outline, 2 x 0.08 deep of a 0.5
+        # radius over 1.2 across 200 pixels: about 27 pixels narrower
+        self.assertLess(curved[middle], min(curved[k] for k in near) - 15)
+        # the tangent frame keeps the polygons' outline there
+        self.assertGreaterEqual(flat[middle], min(flat[k] for k in near))
 
 
 if __name__ == "__main__":

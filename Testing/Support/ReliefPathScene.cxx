@@ -10,8 +10,11 @@
 #include "vtkDoubleArray.h"
 #include "vtkPlaneSource.h"
 #include "vtkIntArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPathFeatureMapper.h"
+#include "vtkOpenGLQuadricPathFeatureMapper.h"
 #include "vtkPathFeatureTextureFilter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -275,11 +278,11 @@ vtkSmartPointer<vtkPolyData> LabelPaths()
   return paths.Make();
 }
 
-vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowEngravedCylinder(
+vtkSmartPointer<vtkOpenGLQuadricPathFeatureMapper> ShowEngravedCylinder(
   vtkRenderWindow* window, int width, int height)
 {
   auto renderer = ReliefScene::LitRenderer(window, width, height);
-  auto mapper = vtkSmartPointer<vtkOpenGLPathFeatureMapper>::New();
+  auto mapper = vtkSmartPointer<vtkOpenGLQuadricPathFeatureMapper>::New();
   mapper->SetInputData(LabelCylinder());
   mapper->SetPathsData(LabelPaths());
   mapper->SetProfilesData(Profiles());
@@ -299,5 +302,65 @@ vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowEngravedCylinder(
   camera->SetViewAngle(26.0);
   renderer->ResetCameraClippingRange();
   return mapper;
+}
+
+vtkSmartPointer<vtkPolyData> CylinderGrooves()
+{
+  PathBuilder paths;
+  for (int k = 1; k <= 3; ++k)
+  {
+    paths.Add({ { 0.0, 0.1 * k }, { 1.0, 0.1 * k } }, 0.012, ROUND, -1);
+  }
+  for (int k = 0; k < 12; ++k)
+  {
+    const double u = (k + 0.5) / 12.0;
+    paths.Add({ { u, 0.03 }, { u, 0.37 } }, 0.02, ROUND, -1);
+  }
+  return paths.Make();
+}
+
+void ShowCurvedPathFeatures(vtkRenderWindow* window, int width, int height, double depthScale)
+{
+  vtkSmartPointer<vtkPolyData> cylinder = LabelCylinder();
+  for (bool quadric : { false, true })
+  {
+    auto renderer = ReliefScene::LitRenderer(window, width, height);
+    renderer->SetViewport(quadric ? 0.5 : 0.0, 0.0, quadric ? 1.0 : 0.5, 1.0);
+    vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+    light->SetPosition(-1.0, -2.0, 1.0); // from the camera's left: both outlines lit
+    vtkSmartPointer<vtkOpenGLReliefMapper> mapper;
+    if (quadric)
+    {
+      auto curved = vtkSmartPointer<vtkOpenGLQuadricPathFeatureMapper>::New();
+      curved->SetPathsData(CylinderGrooves());
+      curved->SetProfilesData(Profiles());
+      mapper = curved;
+    }
+    else
+    {
+      auto flat = vtkSmartPointer<vtkOpenGLPathFeatureMapper>::New();
+      flat->SetPathsData(CylinderGrooves());
+      flat->SetProfilesData(Profiles());
+      mapper = flat;
+    }
+    mapper->SetInputData(cylinder);
+    mapper->SetDepthScale(depthScale);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(0.72, 0.74, 0.78);
+    actor->GetProperty()->SetSpecular(0.3);
+    actor->GetProperty()->SetSpecularPower(30.0);
+    actor->GetProperty()->SetAmbient(0.2);
+    renderer->AddActor(actor);
+    // u = k / 12 lies at 30 k degrees around the axis: the camera along 195 degrees sees
+    // the grooves along it at 105 and 285 degrees on the outlines
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const double toward = 195.0 * M_PI / 180.0;
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(8.0 * std::cos(toward), 8.0 * std::sin(toward), 0.8);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(9.0);
+    renderer->ResetCameraClippingRange();
+  }
 }
 }

@@ -8,6 +8,7 @@
 #include "vtkSmartPointer.h"
 
 class vtkOpenGLPathFeatureMapper;
+class vtkOpenGLQuadricPathFeatureMapper;
 class vtkPathFeatureTextureFilter;
 class vtkPolyData;
 class vtkRenderWindow;
@@ -56,9 +57,20 @@ vtkSmartPointer<vtkPolyData> LabelCylinder();
 /// "VTK" engraved with a V-bit in a frame with rounded (quadratic) corners, on u = 0.5.
 vtkSmartPointer<vtkPolyData> LabelPaths();
 
-/// The label on the cylinder, the side it is on turned to the camera.
-vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowEngravedCylinder(
+/// The label on the cylinder, the side it is on turned to the camera, drawn by
+/// vtkOpenGLQuadricPathFeatureMapper (the engraving follows the curved surface).
+vtkSmartPointer<vtkOpenGLQuadricPathFeatureMapper> ShowEngravedCylinder(
   vtkRenderWindow* window, int width, int height);
+
+/// Round grooves on LabelCylinder(): around it at v = 0.1, 0.2, 0.3, along it at
+/// u = (k + 0.5) / 12 from v = 0.03 to 0.37.
+vtkSmartPointer<vtkPolyData> CylinderGrooves();
+
+/// The grooved cylinder on the tangent frame (left, vtkOpenGLPathFeatureMapper: the
+/// polygons' outline) and on the quadric frame (right, vtkOpenGLQuadricPathFeatureMapper:
+/// the grooves notch the outline), a groove along it on each outline; `depthScale` the
+/// grooves' depth in the world.
+void ShowCurvedPathFeatures(vtkRenderWindow* window, int width, int height, double depthScale);
 }
 
 #endif

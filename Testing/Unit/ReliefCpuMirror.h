@@ -165,6 +165,7 @@ namespace Quadric
 {
 namespace
 {
+#define RELIEF_CURVED_FRAME
 #define RELIEF_MIRROR_FRAME "vtkReliefQuadricFrame.glsl"
 #include "ReliefCpuMirrorSources.h"
 }
@@ -178,6 +179,7 @@ namespace
 #define RELIEF_MIRROR_FRAME "vtkReliefQuadricFrame.glsl"
 #include "ReliefCpuMirrorSources.h"
 #undef RELIEF_EXACT_DISTANCE
+#undef RELIEF_CURVED_FRAME
 }
 }
 /// The derivative frame on the face's own normal

@@ -169,21 +169,28 @@ public:
   /// The first t in [0, tEnd] where the ray is in matter: steps of `step`, then bisection.
   double Hit(glm::dvec3 origin, glm::dvec3 direction, double tEnd, double step) const
   {
+    return this->HitAlong([&](double t) { return origin + t * direction; }, tEnd, step);
+  }
+
+  /// The same along any path through (u, v, depth): `at(t)`.
+  template <typename PointAt>
+  double HitAlong(PointAt at, double tEnd, double step) const
+  {
     double previous = 0.0;
-    if (this->Solid(origin))
+    if (this->Solid(at(0.0)))
     {
       return 0.0;
     }
     for (double t = step; t <= tEnd + step; t += step)
     {
-      if (this->Solid(origin + std::min(t, tEnd) * direction))
+      if (this->Solid(at(std::min(t, tEnd))))
       {
         double low = previous;
         double high = std::min(t, tEnd);
         for (int k = 0; k < 40; ++k)
         {
           const double middle = 0.5 * (low + high);
-          (this->Solid(origin + middle * direction) ? high : low) = middle;
+          (this->Solid(at(middle)) ? high : low) = middle;
         }
         return high;
       }

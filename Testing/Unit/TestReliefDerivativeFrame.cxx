@@ -195,6 +195,7 @@ Fragment FaceFragment(vec3 view)
   fragment.tcoordAlongY = vec2(0.0f, 0.02f);
   fragment.frontFacing = true;
   fragment.depthScale = 0.05f;
+  fragment.deepest = 1.0f;
   return fragment;
 }
 

@@ -220,6 +220,74 @@ TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
   }
 }
 
+// Below a curved surface's quadric (the quadric frame, vtkOpenGLQuadricPathFeatureMapper)
+// the view ray's depth is quadratic along it, its range [0, 1] running to the deepest cut
+// or back out of the quadric (then it passes the outline: a miss). The walk follows it in
+// straight pieces within 1/256 of depth: its hit lies between the marched reference's
+// along the curve sunk and lifted by that much, its clear point (where shadow rays start)
+// in air, and it misses where the curve does.
+TEST(ReliefPathSearch, FollowsCurvedRaysBelowAQuadric)
+{
+  namespace curved = ReliefCpuMirror::Quadric;
+  Scene scene;
+  scene.Profiles = { VGroove, Ridge, Dovetail, DefaultGroove() };
+  scene.Paths.push_back({ { { 0.05, 0.25 }, { 0.95, 0.3 } }, 0.08, 0 });
+  scene.Paths.push_back({ { { 0.2, 0.05 }, { 0.25, 0.6 }, { 0.7, 0.8 } }, 0.06, 1 });
+  scene.Paths.push_back({ { { 0.5, 0.1 }, { 0.55, 0.9 } }, 0.1, 2, 1 });
+  Built built(scene);
+  Reference reference(scene, built.Base);
+  std::mt19937 random(19);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const double chord = 1.0 / 256.0;
+  int hits = 0;
+  int misses = 0;
+  int bent = 0;
+  const int rays = 400;
+  for (int k = 0; k < rays; ++k)
+  {
+    // a convex surface's ray (bend < 0, which may come back out) or a concave one's
+    const float angle = 6.2831853f * unit(random);
+    const float run = 0.3f * unit(random);
+    const float descent = 0.3f + 2.0f * unit(random);
+    curved::ReliefRay ray;
+    ray.origin = vec3(unit(random), unit(random), 0.0f);
+    ray.direction = vec3(run * std::cos(angle), run * std::sin(angle), descent);
+    ray.bend = -2.0f * unit(random) + 0.5f;
+    ray.exact = vec4(0.0f);
+    ray.screenRun = RELIEF_UNKNOWN_RUN;
+    auto along = [&](double lift) {
+      return [&ray, lift](double t) {
+        return glm::dvec3(ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y,
+          t * (ray.direction.z + t * ray.bend) + lift);
+      };
+    };
+    const curved::ReliefHit hit = curved::reliefSearchPathFeatures(ray, 0, 0);
+    const double expected = reference.HitAlong(along(0.0), 1.0, 5e-4);
+    const double deeper = reference.HitAlong(along(chord), 1.0, 5e-4);
+    const double shallower = reference.HitAlong(along(-chord), 1.0, 5e-4);
+    bent += std::abs(ray.bend) > 0.5f ? 1 : 0;
+    if (expected < 0.0)
+    {
+      misses += 1;
+      EXPECT_FALSE(hit.hit && deeper < 0.0) << "ray " << k << " hits at " << hit.t;
+      continue;
+    }
+    ASSERT_TRUE(hit.hit || shallower < 0.0) << "ray " << k << ", the reference at " << expected;
+    hits += 1;
+    const double low = std::min(deeper >= 0.0 ? deeper : 1.0, shallower >= 0.0 ? shallower : 1.0);
+    const double high = std::max(deeper, shallower);
+    EXPECT_TRUE(hit.t >= low - 1e-4 && hit.t <= high + 1e-4)
+      << "ray " << k << " hits at " << hit.t << ", the reference at " << expected << " (" << low
+      << " to " << high << " with the curve 1/256 deeper or shallower)";
+    // the hit lies on the piece it was found on, its clear point in air: the shadow ray
+    // starts there (not up to 1/256 off the piece's surface, on the curve)
+    EXPECT_FALSE(reference.Solid(glm::dvec3(hit.clear))) << "ray " << k;
+  }
+  EXPECT_GE(hits, rays / 2);
+  EXPECT_GE(misses, 10); // rays that come back out of a convex surface
+  EXPECT_GE(bent, 100);
+}
+
 namespace
 {
 // A pixel's footprint in (u, v), its ray, and what region sampling makes of it.

@@ -76,7 +76,7 @@ struct CurvedRay
 CurvedRay MakeRay(vec3 view, vec2 quadric)
 {
   const vec2 terms = reliefQuadricDepthTerms(view, quadric, DepthScale);
-  const float range = reliefQuadricRange(terms);
+  const float range = reliefQuadricRange(terms, 1.0f);
   return { reliefQuadricViewRay(vec2(0.3f, 0.6f), view, Scale, terms, range), range };
 }
 
@@ -122,7 +122,7 @@ TEST_F(ReliefQuadricRay, TheRangeEndsAtDepthOneOrBackOnTheQuadric)
   const CurvedRay flat = MakeRay(view, vec2(0.0f, 0.0f));
   EXPECT_NEAR(flat.Range, DepthScale / std::cos(0.6f), 1e-6);
   EXPECT_NEAR(reliefRayAt(flat.Ray, 1.0f).z, 1.0f, 1e-5);
-  EXPECT_FALSE(reliefQuadricLeaves(flat.Ray));
+  EXPECT_FALSE(reliefQuadricLeaves(flat.Ray, 1.0f));
   const ReliefRay straight = reliefViewRay(vec2(0.3f, 0.6f),
     vec3(view.x / Scale.x / std::abs(view.z) * DepthScale,
       view.y / Scale.y / std::abs(view.z) * DepthScale, 1.0f));
@@ -138,10 +138,10 @@ TEST_F(ReliefQuadricRay, TheRangeEndsAtDepthOneOrBackOnTheQuadric)
   const vec2 dome(-1.0f, -1.0f);
   const CurvedRay steep = MakeRay(View(0.3f, 0.0f), dome);
   EXPECT_NEAR(reliefRayAt(steep.Ray, 1.0f).z, 1.0f, 1e-4);
-  EXPECT_FALSE(reliefQuadricLeaves(steep.Ray));
+  EXPECT_FALSE(reliefQuadricLeaves(steep.Ray, 1.0f));
   const CurvedRay grazing = MakeRay(View(1.5f, 0.0f), dome);
   EXPECT_NEAR(reliefRayAt(grazing.Ray, 1.0f).z, 0.0f, 1e-4);
-  EXPECT_TRUE(reliefQuadricLeaves(grazing.Ray));
+  EXPECT_TRUE(reliefQuadricLeaves(grazing.Ray, 1.0f));
   for (float t = 0.05f; t < 1.0f; t += 0.05f)
   {
     EXPECT_GT(reliefRayAt(grazing.Ray, t).z, 0.0f) << t; // inside the whole way
@@ -150,7 +150,7 @@ TEST_F(ReliefQuadricRay, TheRangeEndsAtDepthOneOrBackOnTheQuadric)
   // a bowl (the inside of a sphere) never lets a ray out: depth 1 is always reached
   const CurvedRay bowl = MakeRay(View(1.5f, 0.0f), vec2(1.0f, 1.0f));
   EXPECT_NEAR(reliefRayAt(bowl.Ray, 1.0f).z, 1.0f, 1e-4);
-  EXPECT_FALSE(reliefQuadricLeaves(bowl.Ray));
+  EXPECT_FALSE(reliefQuadricLeaves(bowl.Ray, 1.0f));
 }
 
 TEST_F(ReliefQuadricRay, BackFacesBehindACarvedOutlineAreTold)
@@ -231,7 +231,7 @@ TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)
       if (deepest < 0.4 - 1e-3)
       {
         ASSERT_FALSE(hit.hit) << "method " << method;
-        ASSERT_TRUE(reliefQuadricLeaves(curved.Ray)) << "method " << method;
+        ASSERT_TRUE(reliefQuadricLeaves(curved.Ray, 1.0f)) << "method " << method;
         silhouettes += method == 0 ? 1 : 0;
       }
       else if (deepest > 0.4 + 1e-3)
@@ -264,7 +264,7 @@ TEST_F(ReliefQuadricRay, TheExactDistanceIsMeasuredPerpendicularToTheRay)
     {
       const vec3 view = View(tilt, 0.9f);
       const vec2 terms = reliefQuadricDepthTerms(view, quadric, DepthScale);
-      const float range = reliefQuadricRange(terms);
+      const float range = reliefQuadricRange(terms, 1.0f);
       const ReliefRay ray = reliefQuadricExact(
         reliefQuadricViewRay(vec2(0.3f, 0.6f), view, Scale, terms, range), view, quadric,
         DepthScale, 0.0f, range);
@@ -299,6 +299,7 @@ Fragment FragmentSeenAlong(vec3 view)
   fragment.tcoord = vec2(0.3f, 0.6f);
   fragment.frontFacing = true;
   fragment.depthScale = DepthScale;
+  fragment.deepest = 1.0f;
   fragment.eyeDistance = 2.0f;
   return fragment;
 }
@@ -392,7 +393,7 @@ TEST_F(ReliefQuadricRay, AHullPointStartsItsRayWhereTheRayMeetsTheQuadric)
           }
           EXPECT_TRUE(approximate::reliefFrameHides(frame, fragment));
           EXPECT_TRUE(
-            approximate::reliefQuadricLeaves(approximate::reliefFrameViewRay(frame, fragment)));
+            approximate::reliefQuadricLeaves(approximate::reliefFrameViewRay(frame, fragment), 1.0f));
           continue;
         }
         ++meetings;

@@ -176,6 +176,8 @@ struct ReliefFragment
   bool frontFacing;    // the side the mesh's winding faces is seen
   bool twoSided;       // back faces carry relief wherever they are drawn
   float depthScale;    // s_z: world depth of relief depth 1
+  float deepest;       // the depth the search reaches: 1 for a height map, path features'
+                       // deepest cut (RELIEF_DEEPEST)
   float eyeDistance;   // from the eye to the polygon's point (1e30 in parallel projection)
 };
 

@@ -19,6 +19,9 @@ uniform int reliefFootprintShading; // 1: lit over the pixel's footprint
 uniform int reliefTwoSided;        // 1: back faces carry relief wherever they are drawn
 uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative determinant)
 uniform mat4 reliefVCDCMatrix;
+#ifndef RELIEF_DEEPEST
+#define RELIEF_DEEPEST 1.0
+#endif
 #ifdef RELIEF_PATH_FEATURES
 uniform sampler2D reliefPathGrid; // vtkPathFeatureTextureFilter's grid, a texel per cell
 uniform sampler2D reliefPathData; // and its data, read as one array of texels, in rows of

@@ -19,6 +19,7 @@
   reliefFragment.frontFacing = gl_FrontFacing == (reliefMirrored == 0);
   reliefFragment.twoSided = reliefTwoSided == 1;
   reliefFragment.depthScale = reliefDepthScale;
+  reliefFragment.deepest = RELIEF_DEEPEST;
   reliefFragment.eyeDistance = cameraParallel == 1 ? 1e30 : length(reliefPositionVSOutput);
   ReliefFrame reliefFrame = reliefFrameOf(reliefFragment);
   // texture coordinates that map no area here (the triangle's points share one (u, v) or

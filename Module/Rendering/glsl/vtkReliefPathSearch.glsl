@@ -753,8 +753,87 @@ ReliefHit reliefPathHit(
   return reliefHitAt(ray, t, found ? max(tStart, t - back) : t, found, samples);
 }
 
-// The path-feature walk of a straight ray from tStart to tEnd; the first entry into solid
-// matter, or a miss at tEnd. `samples` counts cells visited and elements tested.
+// The deepest the ray gets from t0 to t1: its depth is linear in t, or quadratic below a
+// curved frame's quadric (reliefQuadricFrame), deepest at its apex where that lies between.
+float reliefPathDeepestOn(ReliefRay ray, float t0, float t1)
+{
+  float deepest = max(reliefRayAt(ray, t0).z, reliefRayAt(ray, t1).z);
+  float apex = ray.bend < 0.0f ? -0.5f * ray.direction.z / ray.bend : t0;
+  return apex > t0 && apex < t1 ? max(deepest, reliefRayAt(ray, apex).z) : deepest;
+}
+
+// How many straight pieces the ray is followed in from t0 to t1, each within 1/256 of
+// depth of it (a quadratic strays from its chord by a quarter of its t^2 term times the
+// square of the chord's span), at most RELIEF_PATH_PIECES; one for a straight ray.
+#define RELIEF_PATH_PIECES 16
+int reliefPathPieces(ReliefRay ray, float t0, float t1)
+{
+  return int(clamp(ceil((t1 - t0) * 8.0f * sqrt(abs(ray.bend))), 1.0f, float(RELIEF_PATH_PIECES)));
+}
+
+// The straight ray through the ray's points at t0 and t1: its chord; its tangent at t0
+// where the two are one (a ray that starts on a cell's edge), so that a hit there still
+// faces the ray.
+ReliefRay reliefPathChord(ReliefRay ray, float t0, float t1)
+{
+  float depth0 = reliefRayAt(ray, t0).z;
+  float depth1 = reliefRayAt(ray, t1).z;
+  ReliefRay chord = ray;
+  chord.direction.z =
+    t1 > t0 ? (depth1 - depth0) / (t1 - t0) : ray.direction.z + 2.0f * ray.bend * t0;
+  chord.origin.z = depth0 - chord.direction.z * t0;
+  chord.bend = 0.0f;
+  chord.exact = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  return chord;
+}
+
+#ifdef RELIEF_CURVED_FRAME
+// The straight piece of a curved ray the last reliefPathCellEntry ended in: a hit lies on
+// its facet along it (the curve strays up to 1/256 of depth from there), which the hit's
+// clear point and its shadow ray must see from outside.
+ReliefRay reliefPathPiece;
+#endif
+
+// Where the ray first enters matter in a cell from tIn to tOut (reliefPathCellTransition).
+// Below a curved frame's quadric (RELIEF_CURVED_FRAME) the ray bends, and is followed in
+// straight pieces (the paper tracks the surface's curvature along the ray, s5.1).
+ReliefPathTransition reliefPathCellEntry(
+  ReliefRay ray, int list, int count, vec2 near, float base, float tIn, float tOut)
+{
+#ifdef RELIEF_CURVED_FRAME
+  int pieces = reliefPathPieces(ray, tIn, tOut);
+  ReliefPathTransition entry;
+  ReliefPathNearest nearest = reliefPathNoneNear();
+  int samples = 0;
+  int p = 0;
+  for (; p < RELIEF_PATH_PIECES && p < pieces; ++p)
+  {
+    float t0 = mix(tIn, tOut, float(p) / float(pieces));
+    float t1 = mix(tIn, tOut, float(p + 1) / float(pieces));
+    entry = reliefPathCellTransition(
+      reliefPathChord(ray, t0, t1), list, count, near, base, t0, t1, true);
+    samples += entry.samples;
+    nearest = reliefPathNearer(
+      nearest, entry.nearest.gap, entry.nearest.element, entry.nearest.joins, entry.nearest.near);
+    nearest = reliefPathNearer(nearest, entry.nearest.second, -1, 0, near);
+    if (entry.t >= 0.0f)
+    {
+      break;
+    }
+  }
+  entry.nearest = nearest;
+  entry.samples = samples;
+  reliefPathPiece = reliefPathChord(ray, mix(tIn, tOut, float(p) / float(pieces)),
+    mix(tIn, tOut, float(p + 1) / float(pieces)));
+  return entry;
+#else
+  // (a loop of one piece costs llvmpipe a tenth of the frame)
+  return reliefPathCellTransition(ray, list, count, near, base, tIn, tOut, true);
+#endif
+}
+
+// The path-feature walk of a ray from tStart to tEnd; the first entry into solid matter,
+// or a miss at tEnd. `samples` counts cells visited and elements tested.
 ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
@@ -781,13 +860,13 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
     float tOut = max(min(min(next.x, next.y), tEnd), tIn);
     vec4 cellTexel = RELIEF_PATH_CELL(cell);
     samples += 1;
-    // Algorithm 1: a ray that leaves the cell above its highest feature passes it by
-    if (ray.origin.z + tOut * ray.direction.z >= cellTexel.z)
+    // Algorithm 1: a ray that stays above the cell's highest feature passes it by
+    if (reliefPathDeepestOn(ray, tIn, tOut) >= cellTexel.z)
     {
       int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
       vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
-      ReliefPathTransition entry = reliefPathCellTransition(
-        ray, int(cellTexel.x), count, centre, base, tIn, tOut, true);
+      ReliefPathTransition entry =
+        reliefPathCellEntry(ray, int(cellTexel.x), count, centre, base, tIn, tOut);
       samples += entry.samples;
       // the cell's second is another element than its nearest, and so counted exactly
       nearest = reliefPathNearer(nearest, entry.nearest.gap, entry.nearest.element,
@@ -815,15 +894,20 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
     tIn = tOut;
   }
   reliefPathNearest = nearest;
+#ifdef RELIEF_CURVED_FRAME
+  ray = tHit >= 0.0f ? reliefPathPiece : ray;
+#endif
   return reliefPathHit(ray, tStart, tEnd, tHit, normal, material, samples);
 }
 
-// The path-feature search as a relief search: the view ray down to the deepest cut.
+// The path-feature search as a relief search: the view ray down to the deepest cut (a
+// curved frame's ray spans its range to there over t in [0, 1]: reliefQuadricFrame).
 ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
   float deepest = header.y;
-  float tEnd = (deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f;
+  float tEnd = ray.bend != 0.0f ? 1.0f
+                                : (deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f;
   return reliefPathWalk(ray, 0.0f, max(tEnd, 1e-4f));
 }
 
@@ -885,9 +969,9 @@ ReliefPathRegions reliefPathRegions(
   regions.offsets = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   regions.weights = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   regions.right = vec2(0.0f, 0.0f);
-  if (!(ray.direction.z > 1e-6f))
+  if (!(ray.direction.z > 1e-6f) || ray.bend != 0.0f)
   {
-    return regions;
+    return regions; // the regions' rays are straight
   }
   float base = RELIEF_PATH_TEXEL(0).x;
   vec3 atBase = reliefRayAt(ray, (base - ray.origin.z) / ray.direction.z);

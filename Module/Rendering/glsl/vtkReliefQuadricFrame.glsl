@@ -112,19 +112,20 @@ vec2 reliefQuadricDepthTerms(vec3 view, vec2 quadric, float depthScale)
 }
 
 // The distance along the view ray that is searched (s3.3): to where the ray first
-// reaches depth 1 or, on a surface curving away from it, comes back to the quadric
-// (depth 0: a ray that met nothing there passed the silhouette), whichever comes first.
-float reliefQuadricRange(vec2 terms)
+// reaches the deepest depth searched (1 for a height map) or, on a surface curving away
+// from it, comes back to the quadric (depth 0: a ray that met nothing there passed the
+// silhouette), whichever comes first.
+float reliefQuadricRange(vec2 terms, float deepest)
 {
   float range = 1e30f;
   if (terms.x < 0.0f)
   {
     range = -terms.y / terms.x;
   }
-  float discriminant = terms.y * terms.y + 4.0f * terms.x;
+  float discriminant = terms.y * terms.y + 4.0f * terms.x * deepest;
   if (discriminant >= 0.0f)
   {
-    range = min(range, 2.0f / (terms.y + sqrt(discriminant)));
+    range = min(range, 2.0f * deepest / (terms.y + sqrt(discriminant)));
   }
   return range;
 }
@@ -196,11 +197,12 @@ bool reliefQuadricBehindOutline(vec2 terms, float eyeDistance)
     -terms.y / terms.x < eyeDistance;
 }
 
-// True when a ray that met nothing ended back on the quadric, not at depth 1: it left
-// the surface past the silhouette, and the fragment shows what lies behind.
-bool reliefQuadricLeaves(ReliefRay ray)
+// True when a ray that met nothing ended back on the quadric, not at the deepest depth
+// searched: it left the surface past the silhouette, and the fragment shows what lies
+// behind.
+bool reliefQuadricLeaves(ReliefRay ray, float deepest)
 {
-  return reliefRayAt(ray, 1.0f).z < 0.5f;
+  return reliefRayAt(ray, 1.0f).z < 0.5f * deepest;
 }
 
 // Where the view ray from a point `height` above the quadric (depth units, negative
@@ -238,6 +240,7 @@ struct ReliefFrame
   vec2 terms;     // the depth terms from there on
   float depth;    // the ray's depth there: 0 on the quadric, -height below a bowl it never crosses
   float range;    // and the distance searched from there (reliefQuadricRange)
+  float deepest;  // to the fragment's deepest depth
 };
 
 // The frame at a fragment whose point lies `height` above the quadric surface along the
@@ -265,7 +268,8 @@ ReliefFrame reliefQuadricFrame(
   frame.entry = entry.x;
   frame.depth = frame.height < 0.0f && entry.x == 0.0f ? -frame.height / fragment.depthScale : 0.0f;
   frame.terms = vec2(entry.y, entry.z);
-  frame.range = reliefQuadricRange(frame.terms);
+  frame.deepest = fragment.deepest;
+  frame.range = reliefQuadricRange(frame.terms, frame.deepest);
   return frame;
 }
 
@@ -307,7 +311,7 @@ ReliefRay reliefFrameViewRay(ReliefFrame frame, ReliefFragment fragment)
 
 bool reliefFrameRayLeft(ReliefFrame frame, ReliefRay ray, ReliefHit hit)
 {
-  return !hit.hit && reliefQuadricLeaves(ray);
+  return !hit.hit && reliefQuadricLeaves(ray, frame.deepest);
 }
 
 float reliefFrameHitDistance(ReliefFrame frame, ReliefFragment fragment, ReliefRay ray,
