@@ -102,7 +102,7 @@ public:
   /// Consecutive elements of a path that turn by at most this are one straight feature to
   /// the antialiasing's region sampling (s5.7), whose rays may run along a feature far past
   /// the pixel: the pieces of a split segment (MaximumElementLength), not a curve's.
-  static constexpr double StraightJointDegrees = 0.5;
+  static constexpr double StraightJointDegrees = 0.01;
 
   ///@{
   /// The paths (port 0) and the profiles (port 1, optional).

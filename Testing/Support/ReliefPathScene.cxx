@@ -91,6 +91,18 @@ private:
   vtkNew<vtkDoubleArray> Perturbations;
 };
 
+// An actor of `mapper` in a steel grey, with the given specular intensity.
+vtkSmartPointer<vtkActor> SteelActor(vtkMapper* mapper, double specular)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.72, 0.74, 0.78);
+  actor->GetProperty()->SetSpecular(specular);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  actor->GetProperty()->SetAmbient(0.2);
+  return actor;
+}
+
 void AddProfile(vtkPoints* points, vtkCellArray* lines, const std::vector<Point>& profile)
 {
   lines->InsertNextCell(static_cast<int>(profile.size()));
@@ -287,13 +299,7 @@ vtkSmartPointer<vtkOpenGLQuadricPathFeatureMapper> ShowEngravedCylinder(
   mapper->SetPathsData(LabelPaths());
   mapper->SetProfilesData(Profiles());
   mapper->SetDepthScale(0.012);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.72, 0.74, 0.78);
-  actor->GetProperty()->SetSpecular(0.5);
-  actor->GetProperty()->SetSpecularPower(30.0);
-  actor->GetProperty()->SetAmbient(0.2);
-  renderer->AddActor(actor);
+  renderer->AddActor(SteelActor(mapper, 0.5));
   vtkCamera* camera = renderer->GetActiveCamera();
   // u = 0.5 faces -x
   camera->SetFocalPoint(-0.4, 0.0, -0.0);
@@ -345,13 +351,7 @@ void ShowCurvedPathFeatures(vtkRenderWindow* window, int width, int height, doub
     }
     mapper->SetInputData(cylinder);
     mapper->SetDepthScale(depthScale);
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(0.72, 0.74, 0.78);
-    actor->GetProperty()->SetSpecular(0.3);
-    actor->GetProperty()->SetSpecularPower(30.0);
-    actor->GetProperty()->SetAmbient(0.2);
-    renderer->AddActor(actor);
+    renderer->AddActor(SteelActor(mapper, 0.3));
     // u = k / 12 lies at 30 k degrees around the axis: the camera along 195 degrees sees
     // the grooves along it at 105 and 285 degrees on the outlines
     vtkCamera* camera = renderer->GetActiveCamera();

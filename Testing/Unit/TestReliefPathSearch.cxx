@@ -274,8 +274,9 @@ TEST(ReliefPathSearch, FollowsCurvedRaysBelowAQuadric)
     }
     ASSERT_TRUE(hit.hit || shallower < 0.0) << "ray " << k << ", the reference at " << expected;
     hits += 1;
+    // (a curve that misses, lifted, may let the walk miss: t = 1)
     const double low = std::min(deeper >= 0.0 ? deeper : 1.0, shallower >= 0.0 ? shallower : 1.0);
-    const double high = std::max(deeper, shallower);
+    const double high = std::max(deeper >= 0.0 ? deeper : 1.0, shallower >= 0.0 ? shallower : 1.0);
     EXPECT_TRUE(hit.t >= low - 1e-4 && hit.t <= high + 1e-4)
       << "ray " << k << " hits at " << hit.t << ", the reference at " << expected << " (" << low
       << " to " << high << " with the curve 1/256 deeper or shallower)";
@@ -326,26 +327,32 @@ ReliefPathRegions RegionsOf(const Pixel& pixel)
 }
 
 // How far the share of the pixel that each surface takes in its regions (which must be
-// taken, RegionsOf) is from what 96 x 96 rays through the pixel see; the surfaces are
-// told apart by their normals.
+// taken, RegionsOf) is from what 96 x 96 rays through the pixel see; the surfaces (the
+// facets and the base: planes in (u, v, depth)) are told apart by their normals and their
+// planes' offsets along them (a groove's flat floor from the base).
 double RegionShareError(const Pixel& pixel)
 {
   const ReliefRay ray = Ray(pixel.UV, pixel.Direction);
   const ReliefPathRegions regions = RegionsOf(pixel);
   const ReliefPathNearest nearest = reliefPathNearest;
-  std::vector<std::pair<vec3, double>> expected;
-  std::vector<std::pair<vec3, double>> got;
-  auto count = [](std::vector<std::pair<vec3, double>>& shares, double weight) {
+  std::vector<std::pair<vec4, double>> expected;
+  std::vector<std::pair<vec4, double>> got;
+  const auto same = [](vec4 a, vec4 b) {
+    return dot(vec3(a), vec3(b)) > 0.9999f && std::abs(a.w - b.w) < 1e-3f;
+  };
+  auto count = [&same](std::vector<std::pair<vec4, double>>& shares, const ReliefHit& hit,
+                 double weight) {
     const vec3 normal = normalize(reliefPathHitNormal);
+    const vec4 surface(normal, dot(normal, hit.position));
     for (auto& share : shares)
     {
-      if (dot(share.first, normal) > 0.9999f)
+      if (same(share.first, surface))
       {
         share.second += weight;
         return;
       }
     }
-    shares.emplace_back(normal, weight);
+    shares.emplace_back(surface, weight);
   };
   const int n = 96;
   for (int i = 0; i < n; ++i)
@@ -354,9 +361,9 @@ double RegionShareError(const Pixel& pixel)
     {
       const float x = (i + 0.5f) / n - 0.5f;
       const float y = (j + 0.5f) / n - 0.5f;
-      reliefSearchPathFeatures(
+      const ReliefHit hit = reliefSearchPathFeatures(
         Ray(pixel.UV + x * pixel.AlongX + y * pixel.AlongY, pixel.Direction), 0, 0);
-      count(expected, 1.0 / (n * n));
+      count(expected, hit, 1.0 / (n * n));
     }
   }
   double total = 0.0;
@@ -366,11 +373,11 @@ double RegionShareError(const Pixel& pixel)
     ReliefRay regionRay = ray;
     regionRay.origin.x += offset * regions.right.x;
     regionRay.origin.y += offset * regions.right.y;
-    reliefPathElementWalk(regionRay, nearest.element, nearest.near);
+    const ReliefHit hit = reliefPathElementWalk(regionRay, nearest.element, nearest.near);
     const float weight = reliefPathEntry(regions.weights, r);
     EXPECT_GE(weight, 0.0f);
     total += weight;
-    count(got, weight);
+    count(got, hit, weight);
   }
   EXPECT_NEAR(total, 1.0, 1e-5);
   double error = 0.0;
@@ -379,7 +386,7 @@ double RegionShareError(const Pixel& pixel)
     double region = 0.0;
     for (const auto& other : got)
     {
-      region += dot(other.first, share.first) > 0.9999f ? other.second : 0.0;
+      region += same(other.first, share.first) ? other.second : 0.0;
     }
     error = std::max(error, std::abs(region - share.second));
   }
@@ -484,4 +491,43 @@ TEST(ReliefPathSearch, RegionSamplingGoesOnThroughStraightJoints)
   }
   EXPECT_EQ(RegionsOf({ vec2(0.5f, 0.7f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
   EXPECT_GT(RegionsOf({ vec2(0.4f, 0.7f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
+  // the pieces that go on straight are one feature to the walk's nearest: no second near
+  for (const vec2 uv : { vec2(0.3f, 0.3f), vec2(0.5f, 0.32f), vec2(0.7f, 0.28f) })
+  {
+    RegionsOf({ uv, vec3(0.0f, 0.0f, 1.0f), across, along });
+    EXPECT_GT(reliefPathNearest.second, 0.05f) << uv.x << " " << uv.y;
+  }
+}
+
+// Where the rays that fall into a groove run along it, below the view ray's hit, into
+// another feature, the regions refuse (they would walk the one element alone): a pixel
+// beside a deep slot, whose rays run along it as they descend into a crossing slot.
+TEST(ReliefPathSearch, RegionSamplingRefusesWhereItsRaysReachAnotherFeature)
+{
+  const std::vector<dvec2> Slot = { { -1.0, 0.0 }, { -1.0, 2.0 }, { 1.0, 2.0 }, { 1.0, 0.0 } };
+  // the pixel's rays: beside the slot along u, falling in, 0.15 along it per depth
+  const Pixel pixel{ vec2(0.5f, 0.353f), vec3(0.15f, -0.02f, 1.0f), vec2(0.01f, 0.0f),
+    vec2(0.0f, 0.01f) };
+  for (bool crossed : { false, true })
+  {
+    Scene scene;
+    scene.Profiles = { Slot };
+    scene.Paths.push_back({ { { 0.25, 0.3 }, { 0.45, 0.3 }, { 0.65, 0.3 }, { 0.85, 0.3 } }, 0.1, 0 });
+    if (crossed)
+    {
+      scene.Paths.push_back({ { { 0.7, 0.1 }, { 0.7, 0.5 } }, 0.06, 0 });
+    }
+    Built built(scene);
+    const ReliefPathRegions regions = RegionsOf(pixel);
+    if (crossed)
+    {
+      EXPECT_EQ(regions.count, 0);
+      EXPECT_GT(reliefPathNearest.second, 0.05f); // the view ray's path stays far from it
+    }
+    else
+    {
+      EXPECT_GT(regions.count, 0);
+      EXPECT_LE(RegionShareError(pixel), 0.02);
+    }
+  }
 }

@@ -183,7 +183,7 @@ TEST_F(ReliefQuadricRay, BackFacesBehindACarvedOutlineAreTold)
           continue; // grazes depth 1: either answer holds
         }
         const vec2 terms = reliefQuadricDepthTerms(view, quadric, DepthScale);
-        EXPECT_EQ(reliefQuadricBehindOutline(terms, 1e30f), expected)
+        EXPECT_EQ(reliefQuadricBehindOutline(terms, 1.0f, 1e30f), expected)
           << "quadric (" << quadric.x << ", " << quadric.y << "), tilt " << tilt << ", azimuth "
           << azimuth;
         behind += expected ? 1 : 0;
@@ -194,13 +194,38 @@ TEST_F(ReliefQuadricRay, BackFacesBehindACarvedOutlineAreTold)
   const vec2 sphere(-1.0f, -1.0f);
   const vec2 steep = reliefQuadricDepthTerms(View(1.1f, 0.0f), sphere, DepthScale);
   const vec2 grazing = reliefQuadricDepthTerms(View(1.2f, 0.0f), sphere, DepthScale);
-  EXPECT_FALSE(reliefQuadricBehindOutline(steep, 1e30f));
-  EXPECT_TRUE(reliefQuadricBehindOutline(grazing, 1e30f));
+  EXPECT_FALSE(reliefQuadricBehindOutline(steep, 1.0f, 1e30f));
+  EXPECT_TRUE(reliefQuadricBehindOutline(grazing, 1.0f, 1e30f));
   // the grazing ray comes back out of the quadric cos/sin^2 = 0.39 away: a viewer nearer
   // than that is inside the shape, and sees the back face
   const float leaves = std::cos(1.2f) / (std::sin(1.2f) * std::sin(1.2f));
-  EXPECT_TRUE(reliefQuadricBehindOutline(grazing, 1.01f * leaves));
-  EXPECT_FALSE(reliefQuadricBehindOutline(grazing, 0.99f * leaves));
+  EXPECT_TRUE(reliefQuadricBehindOutline(grazing, 1.0f, 1.01f * leaves));
+  EXPECT_FALSE(reliefQuadricBehindOutline(grazing, 1.0f, 0.99f * leaves));
+}
+
+TEST_F(ReliefQuadricRay, TheDeepestDepthSearchedSetsTheRangeAndTheOutline)
+{
+  // path features may cut deeper than 1 (ReliefFragment::deepest): a flat frame's range
+  // runs to that depth, and a curved ray that turns back above it leaves the surface
+  const vec3 view = View(0.6f, 0.3f);
+  const vec2 flatTerms = reliefQuadricDepthTerms(view, vec2(0.0f), DepthScale);
+  EXPECT_NEAR(reliefQuadricRange(flatTerms, 2.5f), 2.5f * reliefQuadricRange(flatTerms, 1.0f), 1e-6);
+  const ReliefRay flat = reliefQuadricViewRay(
+    vec2(0.3f, 0.6f), view, Scale, flatTerms, reliefQuadricRange(flatTerms, 2.5f));
+  EXPECT_NEAR(reliefRayAt(flat, 1.0f).z, 2.5f, 1e-5);
+  EXPECT_FALSE(reliefQuadricLeaves(flat, 2.5f));
+  // on a sphere the grazing ray turns back at depth B^2 / -4A
+  const vec2 sphere(-1.0f, -1.0f);
+  const vec2 terms = reliefQuadricDepthTerms(View(1.2f, 0.0f), sphere, DepthScale);
+  const float turn = terms.y * terms.y / (-4.0f * terms.x);
+  for (float deepest : { 0.5f * turn, 2.0f * turn })
+  {
+    const bool leaves = deepest > turn;
+    const ReliefRay ray = reliefQuadricViewRay(vec2(0.3f, 0.6f), View(1.2f, 0.0f), Scale, terms,
+      reliefQuadricRange(terms, deepest));
+    EXPECT_EQ(reliefQuadricLeaves(ray, deepest), leaves) << deepest;
+    EXPECT_EQ(reliefQuadricBehindOutline(terms, deepest, 1e30f), leaves) << deepest;
+  }
 }
 
 TEST_F(ReliefQuadricRay, SampledSearchesFollowTheCurvedRay)

@@ -298,9 +298,10 @@ vec3 reliefShadeFootprint(
   // cells the view ray passed), the pixel is antialiased: region sampled where one element
   // alone is that near, supersampled elsewhere (intersections, ends), its normals and
   // materials mixed; otherwise all of the pixel would meet the plain base, at any size
-  float footprintReach = 0.5 * max(length(fragment.tcoordAlongX + fragment.tcoordAlongY),
-    length(fragment.tcoordAlongX - fragment.tcoordAlongY));
-  searched = reliefFootprintShading == 1 && reliefPathNearest.gap <= footprintReach ? 1.0 : 0.0;
+  float footprintReach = reliefPathPixelReach(fragment.tcoordAlongX, fragment.tcoordAlongY);
+  // (no walk, and no nearest feature, where DepthScale is 0)
+  searched = reliefFootprintShading == 1 && reliefDepthScale > 0.0 &&
+      reliefPathNearest.gap <= footprintReach ? 1.0 : 0.0;
   if (searched > 0.0 && reliefPathNearest.second > footprintReach &&
     reliefPathShadeRegions(frame, fragment, uv, slope, centre, samples))
   {

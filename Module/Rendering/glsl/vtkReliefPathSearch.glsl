@@ -19,8 +19,9 @@
 // and RELIEF_PATH_CELL(cell), the grid texel of cell (vec2, whole numbers, repeating).
 // Results besides the ReliefHit: reliefPathHitNormal, the outward normal at the hit as a
 // covector in (u, v, depth) (a texture-space direction w leaves the solid where
-// dot(normal, w) > 0), and reliefPathHitMaterial, the material's data texel, or -1 for
-// the actor's property.
+// dot(normal, w) > 0), reliefPathHitMaterial, the material's data texel, or -1 for the
+// actor's property, and reliefPathNearest, the feature the walk came closest to (region
+// sampling's, reliefPathRegions).
 
 // The most elements of a cell (vtkPathFeatureTextureFilter::CellCapacity), points of a
 // profile (MaximumProfilePoints) and crossings tried per cell.
@@ -58,16 +59,22 @@ ReliefPathNearest reliefPathNoneNear()
   return nearest;
 }
 
+// Whether `element` (a data texel) is the nearest or one that goes on straight from it
+// (the data's elements of a path are two texels apart).
+bool reliefPathSameFeature(ReliefPathNearest nearest, int element)
+{
+  return element >= 0 &&
+    (element == nearest.element || (element == nearest.element + 2 && (nearest.joins & 2) != 0) ||
+      (element == nearest.element - 2 && (nearest.joins & 1) != 0));
+}
+
 // `nearest` with element's gap near `near` counted (-1: an element other than nearest's).
-// The nearest element or one that goes on straight from it (the data's elements of a path
-// are two texels apart) takes its place where nearer, and is no second.
+// The nearest element or one that goes on straight from it takes its place where nearer,
+// and is no second.
 ReliefPathNearest reliefPathNearer(
   ReliefPathNearest nearest, float gap, int element, int joins, vec2 near)
 {
-  bool same = element >= 0 &&
-    (element == nearest.element || (element == nearest.element + 2 && (nearest.joins & 2) != 0) ||
-      (element == nearest.element - 2 && (nearest.joins & 1) != 0));
-  if (same)
+  if (reliefPathSameFeature(nearest, element))
   {
     if (gap < nearest.gap)
     {
@@ -115,6 +122,12 @@ struct ReliefPathElement
   float priority;
   int joins;       // ReliefPathNearest's
 };
+
+// Whether the element's profile both cuts below the base and adds above it.
+bool reliefPathMixes(ReliefPathElement element)
+{
+  return element.top < 0.0f && element.bottom > 0.0f;
+}
 
 ReliefPathElement reliefPathElement(int texel, vec2 near)
 {
@@ -253,16 +266,16 @@ float reliefPathSpan(int texel)
   return length(vec2(ends.z - ends.x, ends.w - ends.y));
 }
 
-// Element k of a cell's list, placed near `near`. Element e alone (a list of -e: region
-// sampling's walks, reliefPathElementWalk) goes on through its straight joins, as
+// Element `texel` of a cell's list, placed near `near`. Element e alone (a list of -e:
+// region sampling's walks, reliefPathElementWalk) goes on through its straight joins, as
 // far as the elements there reach, the perturbation's scale going on as along its path.
-ReliefPathElement reliefPathListedElement(int list, int k, vec2 near)
+ReliefPathElement reliefPathListedElement(int list, int texel, vec2 near)
 {
-  ReliefPathElement element = reliefPathElement(reliefPathListed(list, k), near);
+  ReliefPathElement element = reliefPathElement(texel, near);
   if (list < 0)
   {
-    float before = (element.joins & 1) != 0 ? reliefPathSpan(-list - 2) : 0.0f;
-    float after = (element.joins & 2) != 0 ? reliefPathSpan(-list + 2) : 0.0f;
+    float before = (element.joins & 1) != 0 ? reliefPathSpan(texel - 2) : 0.0f;
+    float after = (element.joins & 2) != 0 ? reliefPathSpan(texel + 2) : 0.0f;
     float slope = (element.scaleEnd - element.scaleStart) / element.span;
     element.start -= before * element.axis;
     element.end += after * element.axis;
@@ -315,8 +328,7 @@ vec2 reliefPathRoots(float a, float b, float c)
 }
 
 // Whether the ray point at t lies on the facet from p0 to p1 of the element's profile
-// (within the facet's span), on its straight part (end 0) or revolved about its start
-// (-1) or end (+1).
+// (within the facet's span) revolved about the element's start (end -1) or end (+1).
 bool reliefPathOnFacet(ReliefPathElement element, ReliefRay ray, float t, float base, vec2 p0,
   vec2 p1, float end)
 {
@@ -610,8 +622,9 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
 {
   // Each element's state is kept between crossings (what it makes of the ray: 0 nothing,
   // 1 matter, 2 a cut, reliefPathElementClass; -1 out of reach) with its next crossing,
-  // so a crossing re-tests its own element only; the base plane changes the state of every
-  // element in reach (above it a profile adds, below it cuts).
+  // so a crossing re-tests its own element only; the base plane changes the state of the
+  // elements in reach whose profile both cuts and adds (above it a profile adds, below it
+  // cuts).
   float next[RELIEF_PATH_CELL_CAPACITY];
   vec3 nextNormal[RELIEF_PATH_CELL_CAPACITY];
   int kind[RELIEF_PATH_CELL_CAPACITY];
@@ -633,9 +646,9 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
   {
     int texel = reliefPathListed(list, k);
-    ReliefPathElement element = reliefPathListedElement(list, k, near);
+    ReliefPathElement element = reliefPathListedElement(list, texel, near);
     priority[k] = element.priority;
-    mixes[k] = element.top < 0.0f && element.bottom > 0.0f;
+    mixes[k] = reliefPathMixes(element);
     next[k] = tTo;
     nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
     kind[k] = -1;
@@ -713,15 +726,16 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       {
         if (kind[k] >= 0 && mixes[k])
         {
-          ReliefPathElement element = reliefPathListedElement(list, k, near);
+          ReliefPathElement element =
+            reliefPathListedElement(list, reliefPathListed(list, k), near);
           kind[k] = reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + next[k])), base);
+          result.samples += 1;
         }
       }
-      result.samples += count;
     }
     else
     {
-      ReliefPathElement element = reliefPathListedElement(list, j, near);
+      ReliefPathElement element = reliefPathListedElement(list, reliefPathListed(list, j), near);
       normal = nextNormal[j];
       material = element.material;
       ReliefPathEvent following;
@@ -740,7 +754,8 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
 }
 
 // A walk's hit at tHit (a miss at tEnd where tHit < 0), its normal facing back along the
-// ray, out of the matter it enters.
+// ray, out of the matter it enters; its clear point a little back along the ray, at most
+// half way to tStart (a ray that rises there goes back deeper).
 ReliefHit reliefPathHit(
   ReliefRay ray, float tStart, float tEnd, float tHit, vec3 normal, float material, int samples)
 {
@@ -749,7 +764,7 @@ ReliefHit reliefPathHit(
   reliefPathHitMaterial = material;
   bool found = tHit >= 0.0f;
   float t = found ? tHit : tEnd;
-  float back = min(1e-3f / max(ray.direction.z, 1e-6f), 0.5f * (t - tStart));
+  float back = min(1e-3f / max(abs(ray.direction.z), 1e-6f), 0.5f * (t - tStart));
   return reliefHitAt(ray, t, found ? max(tStart, t - back) : t, found, samples);
 }
 
@@ -788,10 +803,12 @@ ReliefRay reliefPathChord(ReliefRay ray, float t0, float t1)
 }
 
 #ifdef RELIEF_CURVED_FRAME
-// The straight piece of a curved ray the last reliefPathCellEntry ended in: a hit lies on
-// its facet along it (the curve strays up to 1/256 of depth from there), which the hit's
-// clear point and its shadow ray must see from outside.
+// The straight piece of a curved ray the last reliefPathCellEntry ended in, and where it
+// starts: a hit lies on its facet along it (the curve strays up to 1/256 of depth from
+// there), and the hit's clear point, where its shadow ray starts, in air before it on
+// that piece.
 ReliefRay reliefPathPiece;
+float reliefPathPieceStart;
 #endif
 
 // Where the ray first enters matter in a cell from tIn to tOut (reliefPathCellTransition).
@@ -823,8 +840,9 @@ ReliefPathTransition reliefPathCellEntry(
   }
   entry.nearest = nearest;
   entry.samples = samples;
-  reliefPathPiece = reliefPathChord(ray, mix(tIn, tOut, float(p) / float(pieces)),
-    mix(tIn, tOut, float(p + 1) / float(pieces)));
+  reliefPathPieceStart = mix(tIn, tOut, float(p) / float(pieces));
+  reliefPathPiece =
+    reliefPathChord(ray, reliefPathPieceStart, mix(tIn, tOut, float(p + 1) / float(pieces)));
   return entry;
 #else
   // (a loop of one piece costs llvmpipe a tenth of the frame)
@@ -896,19 +914,23 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   reliefPathNearest = nearest;
 #ifdef RELIEF_CURVED_FRAME
   ray = tHit >= 0.0f ? reliefPathPiece : ray;
+  tStart = tHit >= 0.0f ? reliefPathPieceStart : tStart;
 #endif
   return reliefPathHit(ray, tStart, tEnd, tHit, normal, material, samples);
+}
+
+// Where a straight ray reaches the deepest cut.
+float reliefPathStraightEnd(ReliefRay ray)
+{
+  float deepest = RELIEF_PATH_TEXEL(0).y;
+  return max((deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f, 1e-4f);
 }
 
 // The path-feature search as a relief search: the view ray down to the deepest cut (a
 // curved frame's ray spans its range to there over t in [0, 1]: reliefQuadricFrame).
 ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinementSteps)
 {
-  vec4 header = RELIEF_PATH_TEXEL(0);
-  float deepest = header.y;
-  float tEnd = ray.bend != 0.0f ? 1.0f
-                                : (deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f;
-  return reliefPathWalk(ray, 0.0f, max(tEnd, 1e-4f));
+  return reliefPathWalk(ray, 0.0f, ray.bend != 0.0f ? 1.0f : reliefPathStraightEnd(ray));
 }
 
 // The walk through one element alone (its data texel; its copy of the tile nearest to
@@ -916,12 +938,55 @@ ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinemen
 // to the deepest cut.
 ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 {
-  vec4 header = RELIEF_PATH_TEXEL(0);
-  float base = header.x;
-  float tEnd = max((header.y - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f, 1e-4f);
-  ReliefPathTransition entry =
-    reliefPathCellTransition(ray, -element, 1, near, base, 0.0f, tEnd, true);
+  float tEnd = reliefPathStraightEnd(ray);
+  ReliefPathTransition entry = reliefPathCellTransition(
+    ray, -element, 1, near, RELIEF_PATH_TEXEL(0).x, 0.0f, tEnd, true);
   return reliefPathHit(ray, 0.0f, tEnd, entry.t, entry.normal, entry.material, entry.samples);
+}
+
+// How far from its centre a pixel reaches in (u, v), whose neighbours along screen x and
+// y lie alongX and alongY away: half its parallelogram's longer diagonal.
+float reliefPathPixelReach(vec2 alongX, vec2 alongY)
+{
+  return 0.5f * max(length(alongX + alongY), length(alongX - alongY));
+}
+
+// Whether no feature but the nearest element and those it goes on straight into comes
+// within `reach` (the pixel's) of the view ray from t0 to t1: the stretch where the
+// pixel's rays fall into that element and run on below the view ray's hit, which
+// `nearest` did not judge. The features are those the cells there list (each extended by
+// its reach); where that stretch passes more than 16 cells, false.
+bool reliefPathAloneThere(ReliefPathNearest nearest, ReliefRay ray, float t0, float t1, float reach)
+{
+  vec4 header = RELIEF_PATH_TEXEL(0);
+  vec2 size = vec2(header.z, header.w);
+  vec2 from = reliefRayUV(ray, t0);
+  vec2 to = reliefRayUV(ray, t1);
+  vec2 first = floor((min(from, to) - vec2(reach, reach)) * size);
+  vec2 last = floor((max(from, to) + vec2(reach, reach)) * size);
+  int across = int(last.x - first.x) + 1;
+  int cells = across * (int(last.y - first.y) + 1);
+  if (cells > 16)
+  {
+    return false;
+  }
+  for (int c = 0; c < 16 && c < cells; ++c)
+  {
+    vec2 cell = first + vec2(float(c % across), float(c / across));
+    vec4 cellTexel = RELIEF_PATH_CELL(cell);
+    vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
+    int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
+    for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+    {
+      int texel = reliefPathListed(int(cellTexel.x), k);
+      if (!reliefPathSameFeature(nearest, texel) &&
+        reliefPathGap(reliefPathElement(texel, centre), ray, t0, t1) <= reach)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 // Region sampling (s5.7). Where a pixel's footprint meets one straight element alone, what
@@ -932,9 +997,9 @@ ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 // along x and y, a parallelogram) is the sum of two boxes: a trapezoid. The regions are up
 // to four offsets across (in (u, v), along `right`) with their weights, for the nearest
 // element of the view ray's walk (reliefPathNearest), on through its straight joins; none
-// where the rays pass an end of it that no element goes on straight from, where the
-// profile both cuts and adds (the wall up from its opening would change what is seen
-// between those points) or where more than four.
+// where the rays pass an end of it that no element goes on straight from, or cells that
+// list other features, where the profile both cuts and adds (the wall up from its opening
+// would change what is seen between those points) or where more than four.
 struct ReliefPathRegions
 {
   int count;
@@ -975,7 +1040,8 @@ ReliefPathRegions reliefPathRegions(
   }
   float base = RELIEF_PATH_TEXEL(0).x;
   vec3 atBase = reliefRayAt(ray, (base - ray.origin.z) / ray.direction.z);
-  ReliefPathElement element = reliefPathListedElement(-nearest.element, 0, nearest.near);
+  ReliefPathElement element =
+    reliefPathListedElement(-nearest.element, nearest.element, nearest.near);
   regions.right = element.right;
   // the view ray's base crossing, and how its rays move across and along per depth
   vec2 fromStart = vec2(atBase.x, atBase.y) - element.start;
@@ -991,8 +1057,9 @@ ReliefPathRegions reliefPathRegions(
   // beside the straight part wherever the rays come within reach, from depth 0 down
   float largest = max(element.scaleStart, element.scaleEnd);
   float reach = element.halfWidth * element.extent * largest + halfAcross;
+  float deepest = base + max(element.bottom, 0.0f) * largest;
   float top = ray.origin.z;
-  float bottom = base + max(element.bottom, 0.0f) * largest;
+  float bottom = deepest;
   if (abs(slantAcross) > 1e-9f)
   {
     float d0 = base + (-reach - across) / slantAcross;
@@ -1013,12 +1080,22 @@ ReliefPathRegions reliefPathRegions(
       return regions;
     }
   }
+  if (reliefPathMixes(element))
+  {
+    return regions;
+  }
+  // where the rays come within the element's reach, no other feature (beside it they
+  // meet the base, as the view ray did)
+  if (top <= bottom &&
+    !reliefPathAloneThere(nearest, ray, (top - ray.origin.z) / ray.direction.z,
+      (bottom - ray.origin.z) / ray.direction.z, reliefPathPixelReach(alongX, alongY)))
+  {
+    return regions;
+  }
   // the points where what the rays see changes, within the footprint, in order
   float scale = mix(element.scaleStart, element.scaleEnd, clamp(along / element.span, 0.0f, 1.0f));
   float breaks[3];
   int breakCount = 0;
-  bool adds = false;
-  bool cuts = false;
   vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
   vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
   vec4 pair = last;
@@ -1027,8 +1104,6 @@ ReliefPathRegions reliefPathRegions(
     bool first = k % 2 == 0;
     pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
     vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
-    adds = adds || point.y < 0.0f;
-    cuts = cuts || point.y > 0.0f;
     // the point, and where the segment to it crosses the base
     bool crosses = point.y != 0.0f && previous.y != 0.0f && (point.y > 0.0f) != (previous.y > 0.0f);
     float meets = crosses ? point.x - point.y * (previous.x - point.x) / (previous.y - point.y) : 0.0f;
@@ -1062,7 +1137,7 @@ ReliefPathRegions reliefPathRegions(
     }
     previous = point;
   }
-  if (breakCount > 3 || (adds && cuts))
+  if (breakCount > 3)
   {
     return regions;
   }

@@ -185,15 +185,16 @@ float reliefExactDepth(ReliefRay ray, float t, float verticalDepth)
 // `terms` are the depth terms of the view ray followed back from the fragment toward the
 // viewer, below the surface's outward quadric (reliefQuadricDepthTerms of the back face's
 // view direction with the quadric as the front side sees it). When that backward ray
-// comes back out of the quadric before it reaches depth 1, and before it reaches the
+// comes back out of the quadric before it reaches `deepest` (the depth searched, 1 for a
+// height map), and before it reaches the
 // viewer (`eyeDistance` away along it, world units), the view ray came in through the
 // curved surface close by, and the front side's relief answers for this pixel: seen from
 // there it meets the relief or leaves past the outline. Otherwise the ray arrives from
 // inside the shape (the inside of an open shell, or a viewer within the shape) and the
 // back face is what it sees.
-bool reliefQuadricBehindOutline(vec2 terms, float eyeDistance)
+bool reliefQuadricBehindOutline(vec2 terms, float deepest, float eyeDistance)
 {
-  return terms.x < 0.0f && terms.y * terms.y + 4.0f * terms.x < 0.0f &&
+  return terms.x < 0.0f && terms.y * terms.y + 4.0f * terms.x * deepest < 0.0f &&
     -terms.y / terms.x < eyeDistance;
 }
 
@@ -282,7 +283,7 @@ bool reliefFrameHides(ReliefFrame frame, ReliefFragment fragment)
     return !frame.meets;
   }
   return reliefQuadricBehindOutline(
-    reliefQuadricDepthTerms(frame.view, frame.outward, fragment.depthScale),
+    reliefQuadricDepthTerms(frame.view, frame.outward, fragment.depthScale), frame.deepest,
     fragment.eyeDistance);
 }
 
