@@ -99,9 +99,11 @@ public:
   /// Segments longer than this, in tiles, are split, so that a cell finds its copy of an
   /// element within half a tile.
   static constexpr double MaximumElementLength = 0.25;
-  /// Consecutive elements of a path that turn by at most this are one straight feature to
-  /// the antialiasing's region sampling (s5.7), whose rays may run along a feature far past
-  /// the pixel: the pieces of a split segment (MaximumElementLength), not a curve's.
+  /// Consecutive elements of a path that turn by at most this are one straight feature:
+  /// the shader ends each at the plane across the joint, not revolved about it, and the
+  /// antialiasing's region sampling (s5.7), whose rays may run along a feature far past
+  /// the pixel, goes on through: the pieces of a split segment (MaximumElementLength), not
+  /// a curve's.
   static constexpr double StraightJointDegrees = 0.01;
 
   ///@{

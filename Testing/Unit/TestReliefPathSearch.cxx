@@ -115,6 +115,34 @@ TEST(ReliefPathSearch, RevolvedEndsAndJoints)
   EXPECT_NEAR(DepthAt(vec2(0.1f, 0.3f)), 0.0f, 1e-6f);
 }
 
+// Where a straight path is split into pieces (MaximumElementLength: at u = 0.3, 0.5 and
+// 0.7), each piece ends at the plane across the joint, its neighbour going on: the sweep.
+// Revolved there, two notches beside the centre line (a profile whose inside does not
+// reach its middle) would cut the centre line round the joint.
+TEST(ReliefPathSearch, StraightJointsAreNotRevolved)
+{
+  Scene scene;
+  scene.Profiles = { { { -1.0, 0.0 }, { -0.6, 0.5 }, { -0.2, 0.0 }, { 0.2, 0.0 }, { 0.6, 0.5 },
+    { 1.0, 0.0 } } };
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1, 0 });
+  Built built(scene);
+  for (const float u : { 0.3f, 0.48f, 0.5f, 0.52f, 0.69f, 0.71f })
+  {
+    EXPECT_NEAR(DepthAt(vec2(u, 0.5f)), 0.0f, 1e-6f) << u;
+    // the notch 0.6 half widths across: 0.5 deep, at and beside the joints alike
+    EXPECT_NEAR(DepthAt(vec2(u, 0.5f + 0.03f)), 0.5f, 1e-5f) << u;
+  }
+  // rays that run along the centre line across the joints, and down into the notch
+  const ReliefHit along = reliefSearchPathFeatures(Ray(vec2(0.35f, 0.5f), vec3(1.0f, 0.0f, 4.0f)), 0, 0);
+  EXPECT_NEAR(along.position.z, 0.0f, 1e-6f);
+  const ReliefHit notch =
+    reliefSearchPathFeatures(Ray(vec2(0.45f, 0.53f), vec3(0.2f, 0.0f, 1.0f)), 0, 0);
+  EXPECT_NEAR(notch.position.z, 0.5f, 1e-5f);
+  EXPECT_NEAR(notch.position.x, 0.55f, 1e-5f);
+  // the revolved end where the path ends: the notch comes round the end point
+  EXPECT_NEAR(DepthAt(vec2(0.9f + 0.03f, 0.5f)), 0.5f, 1e-5f);
+}
+
 TEST(ReliefPathSearch, CrossingCutsUniteAndPrioritiesBridge)
 {
   Scene scene;

@@ -11,7 +11,11 @@
 // the path's perturbation, linear along the path (s5.5). Beyond its two ends the profile
 // is revolved about the end point (each half on its own side), so that a path's elements
 // join without gaps and a path ends round (s5.4): the union of the elements is the profile
-// swept along the whole path. Each profile facet, with the perturbation's linear scale,
+// swept along the whole path. Where the path goes on straight (a straight join, the
+// pieces of a split segment) the element ends at the plane across its end instead, its
+// neighbour's straight part going on: that is the sweep (a profile whose inside does not
+// reach its middle at some depth would bulge there, revolved), and a ray that passes the
+// joint meets no revolved facet. Each profile facet, with the perturbation's linear scale,
 // is met by a straight ray where a linear function of t vanishes (s5.2), each revolved
 // facet where a quadratic does.
 //
@@ -121,6 +125,8 @@ struct ReliefPathElement
   float material;
   float priority;
   int joins;       // ReliefPathNearest's
+  int rounded;     // 1: the profile is revolved about its start, 2: about its end (not
+                   // at a straight join; at both ends of a region walk's element)
 };
 
 // Whether the element's profile both cuts below the base and adds above it.
@@ -160,6 +166,7 @@ ReliefPathElement reliefPathElement(int texel, vec2 near)
   element.material = path.z;
   element.priority = path.w;
   element.joins = int(record.w);
+  element.rounded = 3 & ~element.joins;
   return element;
 }
 
@@ -200,7 +207,7 @@ int reliefPathInsideProfile(ReliefPathElement element, float x, float y0, float 
 }
 
 // The profile coordinates (x, y) of a point, and the scale there (z); z = 0 where the
-// feature has narrowed to nothing.
+// feature has narrowed to nothing, or beyond a straight join.
 vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
 {
   vec2 offset = vec2(point.x, point.y) - element.start;
@@ -210,6 +217,10 @@ vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
     mix(element.scaleStart, element.scaleEnd, clamp(along / element.span, 0.0f, 1.0f));
   if (along < 0.0f || along > element.span)
   {
+    if ((element.rounded & (along < 0.0f ? 1 : 2)) == 0)
+    {
+      return vec3(0.0f, 0.0f, 0.0f); // a straight join: its neighbour's part goes on
+    }
     // the revolved end: the distance to the end point, on the side the point is
     vec2 centre = along < 0.0f ? element.start : element.end;
     float side = across >= 0.0f ? 1.0f : -1.0f;
@@ -282,6 +293,7 @@ ReliefPathElement reliefPathListedElement(int list, int texel, vec2 near)
     element.scaleStart = max(element.scaleStart - slope * before, 0.0f);
     element.scaleEnd = max(element.scaleEnd + slope * after, 0.0f);
     element.span += before + after;
+    element.rounded = 3;
   }
   return element;
 }
@@ -420,72 +432,45 @@ ReliefPathEvent reliefPathStraightCrossing(ReliefPathEvent best, ReliefPathEleme
 }
 
 // The first crossing after `after` of the ray with the element's facet p0-p1 revolved
-// about its ends (a quadratic in t), where the ray passes beyond them before best.t.
+// about its start (end -1) or its end (+1), a quadratic in t, before best.t.
 ReliefPathEvent reliefPathRevolvedEvents(ReliefPathEvent best, ReliefPathElement element,
-  ReliefPathSweep sweep, ReliefRay ray, float base, vec2 p0, vec2 p1, float after)
+  ReliefPathSweep sweep, ReliefRay ray, float base, vec2 p0, vec2 p1, float after, int end)
 {
-  float alongAfter = sweep.along0 + after * sweep.along1;
-  float alongBest = sweep.along0 + best.t * sweep.along1;
-  float alongLow = min(alongAfter, alongBest);
-  float alongHigh = max(alongAfter, alongBest);
   vec2 facet = p1 - p0;
-  if ((alongLow >= 0.0f && alongHigh <= element.span) || dot(facet, facet) == 0.0f)
-  {
-    return best; // the ray stays beside the straight part; a repeated point
-  }
   vec2 run = vec2(ray.direction.x, ray.direction.y);
   float depth0 = ray.origin.z - base;
   float depth1 = ray.direction.z;
   float w = element.halfWidth;
-  // r^2 = (w s x)^2, x = x0 + fx (Y / s - y0) / fy along the facet
-  for (int end = -1; end <= 1; end += 2)
+  vec2 centre = end < 0 ? element.start : element.end;
+  float scale = end < 0 ? element.scaleStart : element.scaleEnd;
+  vec2 q0 = vec2(ray.origin.x, ray.origin.y) - centre;
+  float radius = w * scale;
+  if (!(radius > 0.0f) || dot(facet, facet) == 0.0f)
   {
-    if ((end < 0 && alongLow >= 0.0f) || (end > 0 && alongHigh <= element.span))
+    return best;
+  }
+  // r^2 = (w s x)^2, x = g0 + g1 t along the facet; a level facet: the ray's depth alone
+  bool level = facet.y == 0.0f;
+  float g0 = level ? 0.0f : p0.x + facet.x * (depth0 / scale - p0.y) / facet.y;
+  float g1 = level ? 0.0f : facet.x * depth1 / (scale * facet.y);
+  vec2 roots = level ? vec2(depth1 != 0.0f ? (p0.y * scale - depth0) / depth1 : -1e30f)
+                     : reliefPathRoots(dot(run, run) - radius * radius * g1 * g1,
+                         2.0f * (dot(q0, run) - radius * radius * g0 * g1),
+                         dot(q0, q0) - radius * radius * g0 * g0);
+  for (int k = 0; k < 2; ++k)
+  {
+    float t = k == 0 ? roots.x : roots.y;
+    if (t > after && t < best.t &&
+      reliefPathOnFacet(element, ray, t, base, p0, p1, float(end)))
     {
-      continue; // the ray stays this side of the end
-    }
-    vec2 centre = end < 0 ? element.start : element.end;
-    float scale = end < 0 ? element.scaleStart : element.scaleEnd;
-    vec2 q0 = vec2(ray.origin.x, ray.origin.y) - centre;
-    float radius = w * scale;
-    if (!(radius > 0.0f))
-    {
-      continue;
-    }
-    if (facet.y != 0.0f)
-    {
-      // x = g0 + g1 t
-      float g0 = p0.x + facet.x * (depth0 / scale - p0.y) / facet.y;
-      float g1 = facet.x * depth1 / (scale * facet.y);
-      vec2 roots = reliefPathRoots(dot(run, run) - radius * radius * g1 * g1,
-        2.0f * (dot(q0, run) - radius * radius * g0 * g1),
-        dot(q0, q0) - radius * radius * g0 * g0);
-      for (int k = 0; k < 2; ++k)
-      {
-        float t = k == 0 ? roots.x : roots.y;
-        if (t > after && t < best.t &&
-          reliefPathOnFacet(element, ray, t, base, p0, p1, float(end)))
-        {
-          vec3 point = reliefRayAt(ray, t);
-          vec2 from = vec2(point.x, point.y) - centre;
-          float x = g0 + g1 * t;
-          // F = (w s x)^2 - r^2
-          best = reliefPathKeep(best, t, after,
-            vec3(-2.0f * from.x, -2.0f * from.y,
-              2.0f * radius * radius * x * facet.x / (scale * facet.y)),
-            element.material);
-        }
-      }
-    }
-    else
-    {
-      // a level facet: the ray's depth alone
-      float t = depth1 != 0.0f ? (p0.y * scale - depth0) / depth1 : -1e30f;
-      if (t > after && t < best.t &&
-        reliefPathOnFacet(element, ray, t, base, p0, p1, float(end)))
-      {
-        best = reliefPathKeep(best, t, after, vec3(0.0f, 0.0f, 1.0f), element.material);
-      }
+      vec3 point = reliefRayAt(ray, t);
+      vec2 from = vec2(point.x, point.y) - centre;
+      float x = g0 + g1 * t;
+      // F = (w s x)^2 - r^2
+      vec3 normal = level ? vec3(0.0f, 0.0f, 1.0f)
+                          : vec3(-2.0f * from.x, -2.0f * from.y,
+                              2.0f * radius * radius * x * facet.x / (scale * facet.y));
+      best = reliefPathKeep(best, t, after, normal, element.material);
     }
   }
   return best;
@@ -521,9 +506,10 @@ ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement ele
   for (int end = -1; end <= 1; end += 2)
   {
     if ((end < 0 && min(alongAfter, alongBest) >= 0.0f) ||
-      (end > 0 && max(alongAfter, alongBest) <= element.span))
+      (end > 0 && max(alongAfter, alongBest) <= element.span) ||
+      (element.rounded & (end < 0 ? 1 : 2)) == 0)
     {
-      continue; // the ray stays beside the element's straight part
+      continue; // the ray stays beside the element's straight part; a straight join
     }
     vec2 centre = end < 0 ? element.start : element.end;
     float radius = w * (end < 0 ? element.scaleStart : element.scaleEnd) * abs(opening);
@@ -569,8 +555,8 @@ float reliefPathGap(ReliefPathElement element, ReliefRay ray, float t0, float t1
 }
 
 // The first crossing after `after` and before best.t of the element's facets (straight
-// and revolved about its ends) and of the walls up from its cuts' openings, where the ray
-// passes above the base.
+// and revolved about its ends), of the planes across its straight joins, and of the
+// walls up from its cuts' openings, where the ray passes above the base.
 ReliefPathEvent reliefPathElementEvents(
   ReliefPathEvent best, ReliefPathElement element, ReliefRay ray, float base, float after)
 {
@@ -578,7 +564,8 @@ ReliefPathEvent reliefPathElementEvents(
                      ray.origin.z + best.t * ray.direction.z) < base;
   ReliefPathSweep sweep = reliefPathSweepOf(element, ray, base);
   vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
-  vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  vec2 lastPoint = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  vec2 previous = lastPoint;
   bool previousSide = reliefPathSide(sweep, previous);
   vec4 pair = last;
   for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
@@ -591,15 +578,54 @@ ReliefPathEvent reliefPathElementEvents(
     {
       best = reliefPathStraightCrossing(best, element, sweep, previous, point, after);
     }
-    best = reliefPathRevolvedEvents(best, element, sweep, ray, base, previous, point, after);
-    if (aboveBase && (point.y > RELIEF_PATH_OPENING) != (previous.y > RELIEF_PATH_OPENING))
+    previous = point;
+    previousSide = side;
+  }
+  float alongAfter = sweep.along0 + after * sweep.along1;
+  float alongBest = sweep.along0 + best.t * sweep.along1;
+  // each end the ray passes beyond, where the profile is revolved (not at a straight
+  // join), facet by facet (on llvmpipe, which runs each branch whether taken or not, a
+  // loop that no lane of the fragments run together needs costs one pass)
+  previous = lastPoint;
+  bool startNeeded = min(alongAfter, alongBest) < 0.0f && (element.rounded & 1) != 0;
+  bool endNeeded = max(alongAfter, alongBest) > element.span && (element.rounded & 2) != 0;
+  int firstEnd = startNeeded ? -1 : 1;
+  int revolved = (startNeeded ? element.points : 0) + (endNeeded ? element.points : 0);
+  for (int k = 0; k < 2 * RELIEF_PATH_PROFILE_POINTS && k < revolved; ++k)
+  {
+    int end = k < element.points ? firstEnd : 1;
+    int i = k < element.points ? k : k - element.points;
+    previous = i == 0 ? lastPoint : previous;
+    pair = i % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + i / 2) : pair;
+    vec2 point = i % 2 == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    best = reliefPathRevolvedEvents(best, element, sweep, ray, base, previous, point, after, end);
+    previous = point;
+  }
+  // the plane across a straight join, where the element gives way to its neighbour (its
+  // state changes there, on no facet)
+  if (sweep.along1 != 0.0f)
+  {
+    float tStart = (element.rounded & 1) == 0 ? -sweep.along0 / sweep.along1 : -1e30f;
+    float tEnd = (element.rounded & 2) == 0 ? (element.span - sweep.along0) / sweep.along1 : -1e30f;
+    vec3 normal = vec3(element.axis.x, element.axis.y, 0.0f);
+    best = reliefPathKeep(best, tStart, after, normal, element.material);
+    best = reliefPathKeep(best, tEnd, after, normal, element.material);
+  }
+  // (no pass where the ray stays below the base)
+  int walls = aboveBase ? element.points : 0;
+  previous = lastPoint;
+  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < walls; ++k)
+  {
+    bool first = k % 2 == 0;
+    pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    if ((point.y > RELIEF_PATH_OPENING) != (previous.y > RELIEF_PATH_OPENING))
     {
       float opening = point.x +
         (RELIEF_PATH_OPENING - point.y) * (previous.x - point.x) / (previous.y - point.y);
       best = reliefPathWallEvents(best, element, ray, base, opening, after);
     }
     previous = point;
-    previousSide = side;
   }
   return best;
 }
@@ -618,7 +644,7 @@ struct ReliefPathTransition
 };
 
 ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count, vec2 near,
-  float base, float tFrom, float tTo, bool intoMatter)
+  float base, float top, float tFrom, float tTo, bool intoMatter)
 {
   // Each element's state is kept between crossings (what it makes of the ray: 0 nothing,
   // 1 matter, 2 a cut, reliefPathElementClass; -1 out of reach) with its next crossing,
@@ -642,7 +668,11 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   // up to its transition passes near a feature)
   float tToBase = clamp(tBase, tFrom, tTo);
   ReliefPathNearest nearestToBase = reliefPathNoneNear();
-  tBase = tBase > tFrom + 1e-6f && tBase < tTo ? tBase : tTo;
+  // where nothing listed rises above the base (the cell's top, its highest depth, lies at
+  // or below it), a ray that descends is in air until it reaches the base: its crossings
+  // count from there (no walls up from a cut's opening, none of the base plane)
+  float tEvents = top >= base && ray.direction.z > 0.0f ? tToBase : tFrom;
+  tBase = tBase > tEvents + 1e-6f && tBase < tTo ? tBase : tTo;
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
   {
     int texel = reliefPathListed(list, k);
@@ -662,14 +692,14 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       first.t = tTo;
       first.normal = vec3(0.0f, 0.0f, 1.0f);
       first.material = -1.0f;
-      first = reliefPathElementEvents(first, element, ray, base, tFrom + 1e-6f);
+      first = reliefPathElementEvents(first, element, ray, base, tEvents + 1e-6f);
       next[k] = first.t;
       nextNormal[k] = first.normal;
       kind[k] = reliefPathElementClass(
-        element, reliefRayAt(ray, 0.5f * (tFrom + min(first.t, tBase))), base);
+        element, reliefRayAt(ray, 0.5f * (tEvents + min(first.t, tBase))), base);
     }
   }
-  float t = tFrom;
+  float t = tEvents;
   vec3 normal = vec3(0.0f, 0.0f, 1.0f);
   float material = -1.0f;
   for (int e = 0; e < RELIEF_PATH_EVENTS; ++e)
@@ -815,7 +845,7 @@ float reliefPathPieceStart;
 // Below a curved frame's quadric (RELIEF_CURVED_FRAME) the ray bends, and is followed in
 // straight pieces (the paper tracks the surface's curvature along the ray, s5.1).
 ReliefPathTransition reliefPathCellEntry(
-  ReliefRay ray, int list, int count, vec2 near, float base, float tIn, float tOut)
+  ReliefRay ray, int list, int count, vec2 near, float base, float top, float tIn, float tOut)
 {
 #ifdef RELIEF_CURVED_FRAME
   int pieces = reliefPathPieces(ray, tIn, tOut);
@@ -828,7 +858,7 @@ ReliefPathTransition reliefPathCellEntry(
     float t0 = mix(tIn, tOut, float(p) / float(pieces));
     float t1 = mix(tIn, tOut, float(p + 1) / float(pieces));
     entry = reliefPathCellTransition(
-      reliefPathChord(ray, t0, t1), list, count, near, base, t0, t1, true);
+      reliefPathChord(ray, t0, t1), list, count, near, base, top, t0, t1, true);
     samples += entry.samples;
     nearest = reliefPathNearer(
       nearest, entry.nearest.gap, entry.nearest.element, entry.nearest.joins, entry.nearest.near);
@@ -846,7 +876,7 @@ ReliefPathTransition reliefPathCellEntry(
   return entry;
 #else
   // (a loop of one piece costs llvmpipe a tenth of the frame)
-  return reliefPathCellTransition(ray, list, count, near, base, tIn, tOut, true);
+  return reliefPathCellTransition(ray, list, count, near, base, top, tIn, tOut, true);
 #endif
 }
 
@@ -884,7 +914,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
       int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
       vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
       ReliefPathTransition entry =
-        reliefPathCellEntry(ray, int(cellTexel.x), count, centre, base, tIn, tOut);
+        reliefPathCellEntry(ray, int(cellTexel.x), count, centre, base, cellTexel.z, tIn, tOut);
       samples += entry.samples;
       // the cell's second is another element than its nearest, and so counted exactly
       nearest = reliefPathNearer(nearest, entry.nearest.gap, entry.nearest.element,
@@ -940,7 +970,7 @@ ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 {
   float tEnd = reliefPathStraightEnd(ray);
   ReliefPathTransition entry = reliefPathCellTransition(
-    ray, -element, 1, near, RELIEF_PATH_TEXEL(0).x, 0.0f, tEnd, true);
+    ray, -element, 1, near, RELIEF_PATH_TEXEL(0).x, -1e30f, 0.0f, tEnd, true);
   return reliefPathHit(ray, 0.0f, tEnd, entry.t, entry.normal, entry.material, entry.samples);
 }
 
