@@ -234,41 +234,79 @@ vec3 reliefFootprintMean(vec3 fallback)
   return dot(mean, mean) > 1e-12 ? normalize(mean) : fallback;
 }
 
-#ifdef RELIEF_PATH_FEATURES
-// Region sampling (the path-feature paper, s5.7): where the view ray passed near one
-// element alone, the footprint's regions across it (reliefPathRegions), each walked at its
-// middle through that element and weighted by its share of the pixel (one region: all of
-// the pixel sees what its centre sees); false, and nothing added, where the regions cannot
-// tell (an end, a profile that both cuts and adds, more than four regions).
-bool reliefPathShadeRegions(ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope,
-  vec3 centre, inout int samples)
-{
-  ReliefRay ray = reliefScreenViewRay(frame, fragment);
-  ReliefPathNearest nearest = reliefPathNearest;
-  ReliefPathRegions regions =
-    reliefPathRegions(ray, nearest, fragment.tcoordAlongX, fragment.tcoordAlongY);
-  if (regions.count == 1)
-  {
-    reliefAddFootprintNormal(centre, 1.0);
-  }
-  for (int r = 0; r < 4 && r < regions.count && regions.count > 1; ++r)
-  {
-    float offset = reliefPathEntry(regions.offsets, r);
-    ReliefRay regionRay = ray;
-    regionRay.origin += vec3(offset * regions.right, 0.0);
-    ReliefHit hit = reliefPathElementWalk(regionRay, nearest.element, nearest.near);
-    samples += hit.samples;
-    reliefAddFootprintNormal(reliefFieldNormal(uv, slope), reliefPathEntry(regions.weights, r));
-  }
-  return regions.count > 0;
-}
-#endif
-
 // Four points of a pixel, a rotated grid: no two share a row or a column, so that edges
 // near the pixels' axes are sampled at four offsets (Akenine-Moller, Haines and Hoffman,
 // Real-Time Rendering, 3rd ed. 2008, s5.6.2).
 const vec2 reliefRotatedGrid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125),
   vec2(0.125, 0.375), vec2(-0.375, 0.125));
+
+#ifdef RELIEF_PATH_FEATURES
+// The normals and materials the path features' footprint is lit with (reliefShadeFootprint).
+// Path features have sharp edges at every scale: wherever a feature's reach comes within
+// the pixel of the view ray's path (judged, as the path-feature paper does, s5.7, on the
+// cells the view ray passed) the pixel is antialiased, elsewhere it all meets the plain
+// base. Region sampling (s5.7) where one element alone is that near: the footprint's
+// regions across it (reliefPathRegions), each walked at its middle through that element
+// and weighted by its share of the pixel (one region: all of the pixel sees what its
+// centre sees); where the regions cannot tell (an end, an intersection, a profile that
+// both cuts and adds, more than four regions), the rays through four points of the pixel
+// (reliefRotatedGrid), each walked through all the features and lit where it hits. Both
+// kinds of walk are one loop of one walk's code: on llvmpipe, which runs eight fragments
+// together and every branch whether taken or not, two loops cost each fragment both.
+vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope,
+  vec3 centre, inout int samples)
+{
+  reliefFootprintCount = 0;
+  float reach = reliefPathPixelReach(fragment.tcoordAlongX, fragment.tcoordAlongY);
+  // (no walk, and no nearest feature, where DepthScale is 0)
+  bool near =
+    reliefFootprintShading == 1 && reliefDepthScale > 0.0 && reliefPathNearest.gap <= reach;
+  ReliefRay ray = reliefScreenViewRay(frame, fragment);
+  ReliefPathNearest nearest = reliefPathNearest;
+  ReliefPathRegions regions;
+  regions.count = 0;
+  if (near && nearest.second > reach)
+  {
+    regions = reliefPathRegions(ray, nearest, fragment.tcoordAlongX, fragment.tcoordAlongY);
+  }
+  if (!near || regions.count == 1)
+  {
+    reliefAddFootprintNormal(centre, 1.0);
+    return centre;
+  }
+  bool regional = regions.count > 1;
+  int walks = regional ? regions.count : 4;
+  for (int k = 0; k < 4 && k < walks; ++k)
+  {
+    ReliefFragment quarter = fragment;
+    quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
+      reliefRotatedGrid[k].y * fragment.tcoordAlongY;
+    ReliefRay walked = reliefScreenViewRay(frame, quarter);
+    if (regional)
+    {
+      walked = ray;
+      walked.origin += vec3(reliefPathEntry(regions.offsets, k) * regions.right, 0.0);
+    }
+    ReliefHit hit = reliefPathElementWalk(walked, regional ? nearest.element : 0, nearest.near);
+    samples += hit.samples;
+    if (regional || !reliefFrameRayLeft(frame, walked, hit))
+    {
+      vec2 at = regional ? uv : hit.position.xy - round(hit.position.xy - uv);
+      reliefAddFootprintNormal(
+        reliefFieldNormal(at, slope), regional ? reliefPathEntry(regions.weights, k) : 1.0);
+    }
+  }
+  for (int k = 0; k < reliefFootprintCount && !regional; ++k)
+  {
+    reliefFootprintWeights[k] /= float(reliefFootprintCount);
+  }
+  if (reliefFootprintCount == 0)
+  {
+    reliefAddFootprintNormal(centre, 1.0); // no quarter's ray met the field
+  }
+  return reliefFootprintMean(centre);
+}
+#endif
 
 // The normals the pixel's footprint is lit with (reliefFootprintNormals), and their mean,
 // the normal VTK's lighting reads otherwise (specular): the hit's own where a pixel holds
@@ -279,11 +317,15 @@ const vec2 reliefRotatedGrid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.1
 // averages away what faces the viewer (Documentation/results.md, shading). The
 // footprint is the texels between neighbouring pixels' entries (the entry's
 // derivatives), measured along its shorter side. `samples` counts on. A normal map is
-// read filtered over the footprint already (reliefTextureAtRay).
+// read filtered over the footprint already (reliefTextureAtRay). Path features have
+// their own (reliefPathShadeFootprint).
 vec3 reliefShadeFootprint(
   ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope, inout int samples)
 {
   vec3 centre = reliefFieldNormal(uv, slope);
+#ifdef RELIEF_PATH_FEATURES
+  return reliefPathShadeFootprint(frame, fragment, uv, slope, centre, samples);
+#else
   reliefFootprintCount = 0;
   float side = min(length(fragment.tcoordAlongX * reliefTextureSize),
     length(fragment.tcoordAlongY * reliefTextureSize));
@@ -291,22 +333,6 @@ vec3 reliefShadeFootprint(
     reliefFootprintShading == 1 && reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
 #ifdef RELIEF_INPUT_NORMALS
   searched = 0.0;
-#endif
-#ifdef RELIEF_PATH_FEATURES
-  // path features have sharp edges at every scale: wherever a feature's reach comes within
-  // the pixel of the view ray's path (judged, as the path-feature paper does, s5.7, on the
-  // cells the view ray passed), the pixel is antialiased: region sampled where one element
-  // alone is that near, supersampled elsewhere (intersections, ends), its normals and
-  // materials mixed; otherwise all of the pixel would meet the plain base, at any size
-  float footprintReach = reliefPathPixelReach(fragment.tcoordAlongX, fragment.tcoordAlongY);
-  // (no walk, and no nearest feature, where DepthScale is 0)
-  searched = reliefFootprintShading == 1 && reliefDepthScale > 0.0 &&
-      reliefPathNearest.gap <= footprintReach ? 1.0 : 0.0;
-  if (searched > 0.0 && reliefPathNearest.second > footprintReach &&
-    reliefPathShadeRegions(frame, fragment, uv, slope, centre, samples))
-  {
-    return reliefFootprintMean(centre);
-  }
 #endif
   if (searched < 1.0)
   {
@@ -336,6 +362,7 @@ vec3 reliefShadeFootprint(
     reliefAddFootprintNormal(centre, searched); // no quarter's ray met the field
   }
   return reliefFootprintMean(centre);
+#endif
 }
 
 //VTK::Relief::TCoordAtHit

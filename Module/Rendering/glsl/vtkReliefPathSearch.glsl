@@ -881,8 +881,11 @@ ReliefPathTransition reliefPathCellEntry(
 }
 
 // The path-feature walk of a ray from tStart to tEnd; the first entry into solid matter,
-// or a miss at tEnd. `samples` counts cells visited and elements tested.
-ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
+// or a miss at tEnd. `samples` counts cells visited and elements tested. Where `alone` is
+// an element's data texel, through that element alone, its copy of the tile nearest to
+// aloneNear, as one cell from tStart to tEnd (region sampling's walks, in the same code as
+// the footprint's other rays).
+ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec2 aloneNear)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
   float base = header.x;
@@ -904,15 +907,46 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd)
   ReliefPathNearest nearest = reliefPathNoneNear();
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && tHit < 0.0f; ++i)
   {
-    vec2 next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
-    float tOut = max(min(min(next.x, next.y), tEnd), tIn);
-    vec4 cellTexel = RELIEF_PATH_CELL(cell);
-    samples += 1;
-    // Algorithm 1: a ray that stays above the cell's highest feature passes it by
-    if (reliefPathDeepestOn(ray, tIn, tOut) >= cellTexel.z)
+    // the cells the ray passes over above their highest feature (Algorithm 1), and those
+    // that list nothing, where a straight ray meets the base alone, in a loop of their
+    // own: on llvmpipe the fragments run together test a cell's elements once all of
+    // them have come to such a cell
+    vec2 next;
+    float tOut;
+    vec4 cellTexel;
+    bool over;
+    bool plain;
+    for (int s = 0; s < RELIEF_MAX_ITERATIONS; ++s)
+    {
+      next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
+      tOut = max(min(min(next.x, next.y), tEnd), tIn);
+      cellTexel = alone > 0 ? vec4(float(-alone), 1.0f, -1e30f, 0.0f) : RELIEF_PATH_CELL(cell);
+      tOut = alone > 0 ? tEnd : tOut;
+      samples += alone > 0 ? 0 : 1;
+      over = reliefPathDeepestOn(ray, tIn, tOut) < cellTexel.z;
+      plain = cellTexel.y < 0.5f && ray.bend == 0.0f;
+      // (a level ray that comes to the base there runs in it)
+      float tBase = ray.direction.z != 0.0f ? (base - ray.origin.z) / ray.direction.z : tIn;
+      tHit = plain && !over ? max(tIn, tBase) : tHit;
+      if (!(over || plain) || tHit >= 0.0f || tOut >= tEnd)
+      {
+        break;
+      }
+      if (next.x < next.y)
+      {
+        cell.x += signs.x;
+      }
+      else
+      {
+        cell.y += signs.y;
+      }
+      tIn = tOut;
+    }
+    if (!(over || plain))
     {
       int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
-      vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
+      vec2 centre =
+        alone > 0 ? aloneNear : vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
       ReliefPathTransition entry =
         reliefPathCellEntry(ray, int(cellTexel.x), count, centre, base, cellTexel.z, tIn, tOut);
       samples += entry.samples;
@@ -956,22 +990,20 @@ float reliefPathStraightEnd(ReliefRay ray)
   return max((deepest - ray.origin.z) / max(ray.direction.z, 1e-12f) + 1e-4f, 1e-4f);
 }
 
-// The path-feature search as a relief search: the view ray down to the deepest cut (a
-// curved frame's ray spans its range to there over t in [0, 1]: reliefQuadricFrame).
-ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinementSteps)
-{
-  return reliefPathWalk(ray, 0.0f, ray.bend != 0.0f ? 1.0f : reliefPathStraightEnd(ray));
-}
-
-// The walk through one element alone (its data texel; its copy of the tile nearest to
-// `near`), on through its straight joins (reliefPathListedElement), from depth 0
-// to the deepest cut.
+// The walk of a footprint's ray from depth 0 to the deepest cut (a curved frame's ray
+// spans its range to there over t in [0, 1]: reliefQuadricFrame), through one element
+// alone (its data texel; its copy of the tile nearest to `near`), on through its straight
+// joins (reliefPathListedElement), or through all of them where `element` is 0.
 ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 {
-  float tEnd = reliefPathStraightEnd(ray);
-  ReliefPathTransition entry = reliefPathCellTransition(
-    ray, -element, 1, near, RELIEF_PATH_TEXEL(0).x, -1e30f, 0.0f, tEnd, true);
-  return reliefPathHit(ray, 0.0f, tEnd, entry.t, entry.normal, entry.material, entry.samples);
+  return reliefPathWalk(
+    ray, 0.0f, ray.bend != 0.0f ? 1.0f : reliefPathStraightEnd(ray), element, near);
+}
+
+// The path-feature search as a relief search: the view ray through all the features.
+ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefPathElementWalk(ray, 0, vec2(0.0f, 0.0f));
 }
 
 // How far from its centre a pixel reaches in (u, v), whose neighbours along screen x and
@@ -1209,7 +1241,8 @@ float reliefPathLightVisibility(vec3 clearPoint, vec3 lightDirection)
   vec3 hitNormal = reliefPathHitNormal;
   float hitMaterial = reliefPathHitMaterial;
   ReliefPathNearest hitNearest = reliefPathNearest;
-  ReliefHit blocked = reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f);
+  ReliefHit blocked =
+    reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f, 0, vec2(0.0f, 0.0f));
   reliefPathHitNormal = hitNormal;
   reliefPathHitMaterial = hitMaterial;
   reliefPathNearest = hitNearest;
