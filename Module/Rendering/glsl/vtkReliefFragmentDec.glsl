@@ -275,9 +275,21 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
     return centre;
   }
   bool regional = regions.count > 1;
-  int walks = regional ? regions.count : 4;
-  for (int k = 0; k < 4 && k < walks; ++k)
+  // the region the view ray's centre lies in sees what it saw (one facet of the element
+  // across a region): lit with its normal and material, added before the walks change them
+  int seen = 0;
+  for (int r = 1; r < 4 && r < regions.count; ++r)
   {
+    seen += reliefPathEntry(regions.bounds, r - 1) < 0.0 ? 1 : 0;
+  }
+  if (regional)
+  {
+    reliefAddFootprintNormal(centre, reliefPathEntry(regions.weights, seen));
+  }
+  int walks = regional ? regions.count - 1 : 4;
+  for (int w = 0; w < 4 && w < walks; ++w)
+  {
+    int k = regional && w >= seen ? w + 1 : w;
     ReliefFragment quarter = fragment;
     quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
       reliefRotatedGrid[k].y * fragment.tcoordAlongY;

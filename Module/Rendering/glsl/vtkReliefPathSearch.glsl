@@ -1067,6 +1067,7 @@ struct ReliefPathRegions
   int count;
   vec4 offsets;
   vec4 weights;
+  vec4 bounds; // where each region ends, across from the view ray's base crossing
   vec2 right;
 };
 
@@ -1095,6 +1096,7 @@ ReliefPathRegions reliefPathRegions(
   regions.count = 0;
   regions.offsets = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   regions.weights = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.bounds = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   regions.right = vec2(0.0f, 0.0f);
   if (!(ray.direction.z > 1e-6f) || ray.bend != 0.0f)
   {
@@ -1219,6 +1221,10 @@ ReliefPathRegions reliefPathRegions(
     regions.weights.y = r == 1 ? weight : regions.weights.y;
     regions.weights.z = r == 2 ? weight : regions.weights.z;
     regions.weights.w = r == 3 ? weight : regions.weights.w;
+    regions.bounds.x = r == 0 ? high : regions.bounds.x;
+    regions.bounds.y = r == 1 ? high : regions.bounds.y;
+    regions.bounds.z = r == 2 ? high : regions.bounds.z;
+    regions.bounds.w = r == 3 ? high : regions.bounds.w;
     low = high;
     below = share;
   }
