@@ -732,7 +732,10 @@ bool vtkOpenGLReliefMapper::GetNeedToRebuildShaders(
   this->HidingShaderOptions = true;
   const bool vtkRebuilds = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor);
   this->HidingShaderOptions = false;
-  return vtkRebuilds || cellBO.ShaderSourceTime < this->ShaderOptionsTime;
+  // footprint shading is compiled in or out (RELIEF_FOOTPRINT_SHADING): on llvmpipe, which
+  // runs every branch, a uniform that turned it off would still cost its walks one pass
+  return vtkRebuilds || cellBO.ShaderSourceTime < this->ShaderOptionsTime ||
+    this->CompiledFootprintShading != this->FootprintShading;
 }
 
 bool vtkOpenGLReliefMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* actor)
@@ -841,13 +844,15 @@ void vtkOpenGLReliefMapper::InsertReliefFragmentShader(
     this->ColorTextureMap
       ? ""
       : std::string("#define ") + Rewrites::GetTextureCoordinates() + " reliefHitTCoord");
+  this->CompiledFootprintShading = this->FootprintShading;
   std::string fragmentSource = fragmentShader->GetSource();
   // exact cell tests read a cell's four corners in one gather where GL offers it
   this->Insert(fragmentSource, Rewrites::FragmentSystem,
     "#extension GL_ARB_texture_gather : enable\n", &Rewrites::InsertAfter);
   this->Insert(fragmentSource, Rewrites::FragmentDeclarations,
     this->GetSearchDefines() + this->GetFrameDefines() +
-      (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") + declarations,
+      (this->InputNormals ? "#define RELIEF_INPUT_NORMALS\n" : "") +
+      (this->FootprintShading ? "#define RELIEF_FOOTPRINT_SHADING\n" : "") + declarations,
     &Rewrites::InsertAfter);
   this->Insert(
     fragmentSource, Rewrites::FragmentStart, vtkReliefFragmentImpl, &Rewrites::InsertBefore);
@@ -946,7 +951,6 @@ void vtkOpenGLReliefMapper::SetMapperShaderParameters(
   program->SetUniformi("reliefLinearSteps", this->LinearSteps);
   program->SetUniformi("reliefBinarySteps", this->BinarySteps);
   program->SetUniformi("reliefSelfShadowing", this->SelfShadowing ? 1 : 0);
-  program->SetUniformi("reliefFootprintShading", this->FootprintShading ? 1 : 0);
   program->SetUniformi("reliefDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
   program->SetUniformi("reliefTwoSided", this->TwoSidedRelief ? 1 : 0);

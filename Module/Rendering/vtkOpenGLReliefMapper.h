@@ -21,8 +21,9 @@
  * map, once per change of the map, unless one is given on port 2
  * (SetAccelerationConnection()). Every setter modifies the mapper, as VTK's do; those
  * that change only a uniform (DepthScale, ScreenTolerance, step counts, SelfShadowing,
- * FootprintShading, DepthCorrection, DisplayMode, TwoSidedRelief) rebuild neither the
- * shader nor the buffers, the search method and the frame's options only the shader.
+ * DepthCorrection, DisplayMode, TwoSidedRelief) rebuild neither the shader nor the
+ * buffers, the search method, the frame's options and FootprintShading (compiled in or
+ * out where the next render finds it changed) only the shader.
  *
  * On the GPU the relief is one 16-bit depth texture at full resolution
  * (vtkReliefTextureFilter's depths lie on its levels): the searches read it, and the
@@ -432,6 +433,7 @@ protected:
   double DepthScale = 0.05;
   bool SelfShadowing = true;
   bool FootprintShading = true;
+  bool CompiledFootprintShading = true; // the shader's, last built
   bool DepthCorrection = true;
   int DisplayMode = SHADED;
   bool TwoSidedRelief = false;

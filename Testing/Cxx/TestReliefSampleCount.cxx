@@ -1,8 +1,9 @@
 // SampleCount display mode, the measure of cost: every covered pixel reports the height
 // samples its view ray took, within the bounds of the search method, and with footprint
 // shading those of the rays through four points of the pixel too; switching the
-// method rebuilds the shader, uniform-only setters modify the mapper and rebuild
-// neither its shader nor its buffers, and released graphics resources come back.
+// method or footprint shading rebuilds the shader, uniform-only setters modify the
+// mapper and rebuild neither its shader nor its buffers, and released graphics
+// resources come back.
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -122,7 +123,12 @@ int TestReliefSampleCount(int, char*[])
   Counts footprint = SampleCounts(window);
   check(footprint.Minimum >= 5 * 6 && footprint.Maximum <= 5 * 15,
     "footprint shading: five LinearBinary searches a pixel");
+  // compiled in or out (on llvmpipe a uniform that turned it off would still cost a pass)
+  const int footprintBuilds = mapper->ShaderBuilds;
   mapper->FootprintShadingOff();
+  Counts plain = SampleCounts(window);
+  check(mapper->ShaderBuilds > footprintBuilds, "footprint shading off rebuilds the shader");
+  check(plain.Minimum >= 6 && plain.Maximum <= 15, "and one search a pixel is left");
 
   const vtkMTimeType before = mapper->GetMTime();
   const int shaderBuilds = mapper->ShaderBuilds;
@@ -138,7 +144,7 @@ int TestReliefSampleCount(int, char*[])
   check(mapper->GetMTime() > before, "setters modify the mapper");
   Counts moreSteps = SampleCounts(window);
   check(shaderBuilds > 0 && mapper->ShaderBuilds == shaderBuilds,
-    "uniform-only setters do not rebuild the shader");
+    "uniform-only setters, and footprint shading on and back off, do not rebuild the shader");
   check(bufferBuilds > 0 && mapper->BufferBuilds == bufferBuilds,
     "uniform-only setters do not rebuild the buffers");
   check(moreSteps.Minimum >= 4 && moreSteps.Maximum <= 23, "LinearBinary 20 + 3 takes 4 to 23");

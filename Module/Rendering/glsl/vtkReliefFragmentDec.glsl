@@ -15,7 +15,6 @@ uniform int reliefBinarySteps;
 uniform int reliefSelfShadowing;
 uniform int reliefDepthCorrection;
 uniform int reliefDisplayMode;     // 0 shaded, 1 sample count
-uniform int reliefFootprintShading; // 1: lit over the pixel's footprint
 uniform int reliefTwoSided;        // 1: back faces carry relief wherever they are drawn
 uniform int reliefMirrored;        // 1: the actor's matrix mirrors (negative determinant)
 uniform mat4 reliefVCDCMatrix;
@@ -260,7 +259,7 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
   float reach = reliefPathPixelReach(fragment.tcoordAlongX, fragment.tcoordAlongY);
   // (no walk, and no nearest feature, where DepthScale is 0)
   bool near =
-    reliefFootprintShading == 1 && reliefDepthScale > 0.0 && reliefPathNearest.gap <= reach;
+    reliefDepthScale > 0.0 && reliefPathNearest.gap <= reach;
   ReliefRay ray = reliefScreenViewRay(frame, fragment);
   ReliefPathNearest nearest = reliefPathNearest;
   ReliefPathRegions regions;
@@ -335,14 +334,18 @@ vec3 reliefShadeFootprint(
   ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope, inout int samples)
 {
   vec3 centre = reliefFieldNormal(uv, slope);
-#ifdef RELIEF_PATH_FEATURES
+#if !defined(RELIEF_FOOTPRINT_SHADING)
+  reliefFootprintCount = 0;
+  reliefAddFootprintNormal(centre, 1.0); // footprint shading off (RELIEF_FOOTPRINT_SHADING)
+  return centre;
+#elif defined(RELIEF_PATH_FEATURES)
   return reliefPathShadeFootprint(frame, fragment, uv, slope, centre, samples);
 #else
   reliefFootprintCount = 0;
   float side = min(length(fragment.tcoordAlongX * reliefTextureSize),
     length(fragment.tcoordAlongY * reliefTextureSize));
   float searched =
-    reliefFootprintShading == 1 && reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
+    reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
 #ifdef RELIEF_INPUT_NORMALS
   searched = 0.0;
 #endif
