@@ -911,11 +911,11 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
     // that list nothing, where a straight ray meets the base alone, in a loop of their
     // own: on llvmpipe the fragments run together test a cell's elements once all of
     // them have come to such a cell
-    vec2 next;
-    float tOut;
-    vec4 cellTexel;
-    bool over;
-    bool plain;
+    vec2 next = vec2(0.0f, 0.0f);
+    float tOut = tIn;
+    vec4 cellTexel = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+    bool over = false;
+    bool plain = false;
     for (int s = 0; s < RELIEF_MAX_ITERATIONS; ++s)
     {
       next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
