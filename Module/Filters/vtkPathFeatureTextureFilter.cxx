@@ -768,17 +768,18 @@ std::vector<int> vtkPathFeatureTextureFilter::StraightJoins() const
 {
   const std::vector<Element>& elements = this->Internal->Elements;
   const double straight = std::cos(StraightJointDegrees * M_PI / 180.0);
+  const double exact = std::cos(ExactJointRadians);
   std::vector<int> joins(elements.size(), 0);
   for (size_t e = 1; e < elements.size(); ++e)
   {
     const Element& previous = elements[e - 1];
     const Element& element = elements[e];
-    if (previous.Path == element.Path &&
-      glm::dot(glm::normalize(previous.End - previous.Start),
-        glm::normalize(element.End - element.Start)) >= straight)
+    const double turn = glm::dot(glm::normalize(previous.End - previous.Start),
+      glm::normalize(element.End - element.Start));
+    if (previous.Path == element.Path && turn >= straight)
     {
-      joins[e - 1] |= 2;
-      joins[e] |= 1;
+      joins[e - 1] |= turn >= exact ? 2 + 8 : 2;
+      joins[e] |= turn >= exact ? 1 + 4 : 1;
     }
   }
   return joins;

@@ -52,7 +52,8 @@
  *   (scale at start, scale at end, length, 0);
  * - an element, a straight piece of a path: (start, end), (path texel, arc length along
  *   the path at its start, at its end, joins: 1 where the path's previous element goes on
- *   straight on from its start, + 2 where the next goes on from its end, StraightJointDegrees);
+ *   straight on from its start, + 2 where the next goes on from its end, StraightJointDegrees;
+ *   + 4 and + 8 where they go on exactly, ExactJointRadians);
  *   a quadratic segment is stored as pieces whose chords stray at most 1/50 of the
  *   feature's half width from the curve;
  * - a cell's list: element texels, four per texel, -1 past the end.
@@ -99,12 +100,14 @@ public:
   /// Segments longer than this, in tiles, are split, so that a cell finds its copy of an
   /// element within half a tile.
   static constexpr double MaximumElementLength = 0.25;
-  /// Consecutive elements of a path that turn by at most this are one straight feature:
-  /// the shader ends each at the plane across the joint, not revolved about it, and the
-  /// antialiasing's region sampling (s5.7), whose rays may run along a feature far past
-  /// the pixel, goes on through: the pieces of a split segment (MaximumElementLength), not
-  /// a curve's.
+  /// Consecutive elements of a path that turn by at most this are one straight feature to
+  /// the antialiasing's region sampling (s5.7), whose rays may run along a feature far past
+  /// the pixel: the pieces of a split segment (MaximumElementLength), not a curve's.
   static constexpr double StraightJointDegrees = 0.01;
+  /// Consecutive elements that turn by at most this go on exactly: the shader ends each at
+  /// the plane across the joint, not revolved about it (its neighbour's straight part goes
+  /// on; where they turn more the planes would leave a sliver of the width times the turn).
+  static constexpr double ExactJointRadians = 1e-6;
 
   ///@{
   /// The paths (port 0) and the profiles (port 1, optional).

@@ -734,8 +734,11 @@ bool vtkOpenGLReliefMapper::GetNeedToRebuildShaders(
   this->HidingShaderOptions = false;
   // footprint shading is compiled in or out (RELIEF_FOOTPRINT_SHADING): on llvmpipe, which
   // runs every branch, a uniform that turned it off would still cost its walks one pass
+  const bool reliefPrimitive = this->DrawingRelief &&
+    &cellBO == &this->Primitives[PrimitiveTris] &&
+    actor->GetProperty()->GetRepresentation() == VTK_SURFACE;
   return vtkRebuilds || cellBO.ShaderSourceTime < this->ShaderOptionsTime ||
-    this->CompiledFootprintShading != this->FootprintShading;
+    (reliefPrimitive && this->CompiledFootprintShading != this->FootprintShading);
 }
 
 bool vtkOpenGLReliefMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* actor)

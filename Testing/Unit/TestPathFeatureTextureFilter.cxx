@@ -125,8 +125,9 @@ TEST(PathFeatureTextureFilter, DataTexelsHoldPathsProfilesAndMaterials)
     EXPECT_NEAR(ends.z, 0.1f + 0.2f * (e + 1), 1e-6f);
     EXPECT_EQ(textures.Texel(9 + 2 * e).x, 6.0f);
     EXPECT_NEAR(textures.Texel(9 + 2 * e).y, 0.2f * e, 1e-6f);
-    // joined straight to the previous piece (1) and to the next (2), not at the path's ends
-    EXPECT_EQ(textures.Texel(9 + 2 * e).w, (e > 0 ? 1.0f : 0.0f) + (e < 3 ? 2.0f : 0.0f));
+    // joined straight, and exactly, to the previous piece (1 + 4) and to the next (2 + 8),
+    // not at the path's ends
+    EXPECT_EQ(textures.Texel(9 + 2 * e).w, (e > 0 ? 5.0f : 0.0f) + (e < 3 ? 10.0f : 0.0f));
   }
   EXPECT_GT(filter->GetTextureBytes(), 0);
 }

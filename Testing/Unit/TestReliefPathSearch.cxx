@@ -143,6 +143,22 @@ TEST(ReliefPathSearch, StraightJointsAreNotRevolved)
   EXPECT_NEAR(DepthAt(vec2(0.9f + 0.03f, 0.5f)), 0.5f, 1e-5f);
 }
 
+// A ray that grazes down from a ridge's top toward the base (0.4 below it, 400 tiles
+// on) over a repeating grid of 256^2 runs out of steps (RELIEF_MAX_ITERATIONS cells, the
+// cells it passes over included) and misses: no walk runs on without end.
+TEST(ReliefPathSearch, GrazingRayRunsOutOfStepsAndMisses)
+{
+  Scene scene;
+  scene.Profiles = { Ridge };
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1, 0 });
+  Built built(scene, 256);
+  const ReliefHit hit =
+    reliefSearchPathFeatures(Ray(vec2(0.3f, 0.2f), vec3(1.0f, 0.0f, 1e-9f)), 0, 0);
+  EXPECT_FALSE(hit.hit) << hit.t;
+  EXPECT_LE(hit.samples, RELIEF_MAX_ITERATIONS + 1);
+  EXPECT_GE(hit.samples, RELIEF_MAX_ITERATIONS / 2);
+}
+
 TEST(ReliefPathSearch, CrossingCutsUniteAndPrioritiesBridge)
 {
   Scene scene;

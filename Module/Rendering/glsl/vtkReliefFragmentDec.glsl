@@ -264,6 +264,9 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
   ReliefPathNearest nearest = reliefPathNearest;
   ReliefPathRegions regions;
   regions.count = 0;
+  regions.offsets = vec4(0.0);
+  regions.weights = vec4(0.0);
+  regions.right = vec2(0.0);
   if (near && nearest.second > reach)
   {
     regions = reliefPathRegions(ray, nearest, fragment.tcoordAlongX, fragment.tcoordAlongY);
@@ -274,29 +277,20 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
     return centre;
   }
   bool regional = regions.count > 1;
-  // the region the view ray's centre lies in sees what it saw (one facet of the element
-  // across a region): lit with its normal and material, added before the walks change them
-  int seen = 0;
-  for (int r = 1; r < 4 && r < regions.count; ++r)
+  int walks = regional ? regions.count : 4;
+  for (int k = 0; k < 4 && k < walks; ++k)
   {
-    seen += reliefPathEntry(regions.bounds, r - 1) < 0.0 ? 1 : 0;
-  }
-  if (regional)
-  {
-    reliefAddFootprintNormal(centre, reliefPathEntry(regions.weights, seen));
-  }
-  int walks = regional ? regions.count - 1 : 4;
-  for (int w = 0; w < 4 && w < walks; ++w)
-  {
-    int k = regional && w >= seen ? w + 1 : w;
-    ReliefFragment quarter = fragment;
-    quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
-      reliefRotatedGrid[k].y * fragment.tcoordAlongY;
-    ReliefRay walked = reliefScreenViewRay(frame, quarter);
+    ReliefRay walked = ray;
     if (regional)
     {
-      walked = ray;
       walked.origin += vec3(reliefPathEntry(regions.offsets, k) * regions.right, 0.0);
+    }
+    else
+    {
+      ReliefFragment quarter = fragment;
+      quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
+        reliefRotatedGrid[k].y * fragment.tcoordAlongY;
+      walked = reliefScreenViewRay(frame, quarter);
     }
     ReliefHit hit = reliefPathElementWalk(walked, regional ? nearest.element : 0, nearest.near);
     samples += hit.samples;

@@ -11,9 +11,9 @@
 // the path's perturbation, linear along the path (s5.5). Beyond its two ends the profile
 // is revolved about the end point (each half on its own side), so that a path's elements
 // join without gaps and a path ends round (s5.4): the union of the elements is the profile
-// swept along the whole path. Where the path goes on straight (a straight join, the
-// pieces of a split segment) the element ends at the plane across its end instead, its
-// neighbour's straight part going on: that is the sweep (a profile whose inside does not
+// swept along the whole path. Where the path goes on exactly straight (the pieces of a
+// split segment, ExactJointRadians) the element ends at the plane across its end
+// instead, its neighbour's straight part going on: that is the sweep (a profile whose inside does not
 // reach its middle at some depth would bulge there, revolved), and a ray that passes the
 // joint meets no revolved facet. Each profile facet, with the perturbation's linear scale,
 // is met by a straight ray where a linear function of t vanishes (s5.2), each revolved
@@ -48,6 +48,7 @@ struct ReliefPathNearest
   float gap;
   int element; // its data texel; -1 where none
   int joins;   // 1: its path's previous element goes on from its start, 2: the next from its end
+               // (+ 4, + 8: exactly, vtkPathFeatureTextureFilter::ExactJointRadians)
   vec2 near;   // where the ray passed it (the copy of the tile it is in)
   float second; // the least gap of the other elements
 };
@@ -126,7 +127,7 @@ struct ReliefPathElement
   float priority;
   int joins;       // ReliefPathNearest's
   int rounded;     // 1: the profile is revolved about its start, 2: about its end (not
-                   // at a straight join; at both ends of a region walk's element)
+                   // where its path goes on exactly; at both ends of a region walk's)
 };
 
 // Whether the element's profile both cuts below the base and adds above it.
@@ -166,7 +167,7 @@ ReliefPathElement reliefPathElement(int texel, vec2 near)
   element.material = path.z;
   element.priority = path.w;
   element.joins = int(record.w);
-  element.rounded = 3 & ~element.joins;
+  element.rounded = 3 & ~(element.joins >> 2);
   return element;
 }
 
@@ -207,7 +208,7 @@ int reliefPathInsideProfile(ReliefPathElement element, float x, float y0, float 
 }
 
 // The profile coordinates (x, y) of a point, and the scale there (z); z = 0 where the
-// feature has narrowed to nothing, or beyond a straight join.
+// feature has narrowed to nothing, or beyond an exact join.
 vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
 {
   vec2 offset = vec2(point.x, point.y) - element.start;
@@ -219,7 +220,7 @@ vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
   {
     if ((element.rounded & (along < 0.0f ? 1 : 2)) == 0)
     {
-      return vec3(0.0f, 0.0f, 0.0f); // a straight join: its neighbour's part goes on
+      return vec3(0.0f, 0.0f, 0.0f); // an exact join: its neighbour's part goes on
     }
     // the revolved end: the distance to the end point, on the side the point is
     vec2 centre = along < 0.0f ? element.start : element.end;
@@ -434,7 +435,7 @@ ReliefPathEvent reliefPathStraightCrossing(ReliefPathEvent best, ReliefPathEleme
 // The first crossing after `after` of the ray with the element's facet p0-p1 revolved
 // about its start (end -1) or its end (+1), a quadratic in t, before best.t.
 ReliefPathEvent reliefPathRevolvedEvents(ReliefPathEvent best, ReliefPathElement element,
-  ReliefPathSweep sweep, ReliefRay ray, float base, vec2 p0, vec2 p1, float after, int end)
+  ReliefRay ray, float base, vec2 p0, vec2 p1, float after, int end)
 {
   vec2 facet = p1 - p0;
   vec2 run = vec2(ray.direction.x, ray.direction.y);
@@ -509,7 +510,7 @@ ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement ele
       (end > 0 && max(alongAfter, alongBest) <= element.span) ||
       (element.rounded & (end < 0 ? 1 : 2)) == 0)
     {
-      continue; // the ray stays beside the element's straight part; a straight join
+      continue; // the ray stays beside the element's straight part; an exact join
     }
     vec2 centre = end < 0 ? element.start : element.end;
     float radius = w * (end < 0 ? element.scaleStart : element.scaleEnd) * abs(opening);
@@ -555,7 +556,7 @@ float reliefPathGap(ReliefPathElement element, ReliefRay ray, float t0, float t1
 }
 
 // The first crossing after `after` and before best.t of the element's facets (straight
-// and revolved about its ends), of the planes across its straight joins, and of the
+// and revolved about its ends), of the planes across its exact joins, and of the
 // walls up from its cuts' openings, where the ray passes above the base.
 ReliefPathEvent reliefPathElementEvents(
   ReliefPathEvent best, ReliefPathElement element, ReliefRay ray, float base, float after)
@@ -583,7 +584,7 @@ ReliefPathEvent reliefPathElementEvents(
   }
   float alongAfter = sweep.along0 + after * sweep.along1;
   float alongBest = sweep.along0 + best.t * sweep.along1;
-  // each end the ray passes beyond, where the profile is revolved (not at a straight
+  // each end the ray passes beyond, where the profile is revolved (not at an exact
   // join), facet by facet (on llvmpipe, which runs each branch whether taken or not, a
   // loop that no lane of the fragments run together needs costs one pass)
   previous = lastPoint;
@@ -598,10 +599,10 @@ ReliefPathEvent reliefPathElementEvents(
     previous = i == 0 ? lastPoint : previous;
     pair = i % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + i / 2) : pair;
     vec2 point = i % 2 == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
-    best = reliefPathRevolvedEvents(best, element, sweep, ray, base, previous, point, after, end);
+    best = reliefPathRevolvedEvents(best, element, ray, base, previous, point, after, end);
     previous = point;
   }
-  // the plane across a straight join, where the element gives way to its neighbour (its
+  // the plane across an exact join, where the element gives way to its neighbour (its
   // state changes there, on no facet)
   if (sweep.along1 != 0.0f)
   {
@@ -908,15 +909,15 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && tHit < 0.0f; ++i)
   {
     // the cells the ray passes over above their highest feature (Algorithm 1), and those
-    // that list nothing, where a straight ray meets the base alone, in a loop of their
-    // own: on llvmpipe the fragments run together test a cell's elements once all of
-    // them have come to such a cell
+    // that list nothing, where a straight ray that descends meets the base alone, in a
+    // loop of their own (its steps counted with the walk's): on llvmpipe the fragments
+    // run together test a cell's elements once all of them have come to such a cell
     vec2 next = vec2(0.0f, 0.0f);
     float tOut = tIn;
     vec4 cellTexel = vec4(0.0f, 0.0f, 0.0f, 0.0f);
     bool over = false;
     bool plain = false;
-    for (int s = 0; s < RELIEF_MAX_ITERATIONS; ++s)
+    for (; i < RELIEF_MAX_ITERATIONS; ++i)
     {
       next = reliefCrossings(grid, cell + ahead, signs, inverseRun);
       tOut = max(min(min(next.x, next.y), tEnd), tIn);
@@ -924,9 +925,11 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
       tOut = alone > 0 ? tEnd : tOut;
       samples += alone > 0 ? 0 : 1;
       over = reliefPathDeepestOn(ray, tIn, tOut) < cellTexel.z;
-      plain = cellTexel.y < 0.5f && ray.bend == 0.0f;
-      // (a level ray that comes to the base there runs in it)
-      float tBase = ray.direction.z != 0.0f ? (base - ray.origin.z) / ray.direction.z : tIn;
+      plain = cellTexel.y < 0.5f && ray.bend == 0.0f && ray.direction.z > 0.0f;
+#ifdef RELIEF_CURVED_FRAME
+      plain = false; // (a curved frame's hit lies on the piece its cell's entry keeps)
+#endif
+      float tBase = (base - ray.origin.z) / max(ray.direction.z, 1e-30f);
       tHit = plain && !over ? max(tIn, tBase) : tHit;
       if (!(over || plain) || tHit >= 0.0f || tOut >= tEnd)
       {
@@ -941,6 +944,10 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
         cell.y += signs.y;
       }
       tIn = tOut;
+    }
+    if (i >= RELIEF_MAX_ITERATIONS)
+    {
+      break; // out of steps: a miss
     }
     if (!(over || plain))
     {
@@ -1067,7 +1074,6 @@ struct ReliefPathRegions
   int count;
   vec4 offsets;
   vec4 weights;
-  vec4 bounds; // where each region ends, across from the view ray's base crossing
   vec2 right;
 };
 
@@ -1096,7 +1102,6 @@ ReliefPathRegions reliefPathRegions(
   regions.count = 0;
   regions.offsets = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   regions.weights = vec4(0.0f, 0.0f, 0.0f, 0.0f);
-  regions.bounds = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   regions.right = vec2(0.0f, 0.0f);
   if (!(ray.direction.z > 1e-6f) || ray.bend != 0.0f)
   {
@@ -1221,10 +1226,6 @@ ReliefPathRegions reliefPathRegions(
     regions.weights.y = r == 1 ? weight : regions.weights.y;
     regions.weights.z = r == 2 ? weight : regions.weights.z;
     regions.weights.w = r == 3 ? weight : regions.weights.w;
-    regions.bounds.x = r == 0 ? high : regions.bounds.x;
-    regions.bounds.y = r == 1 ? high : regions.bounds.y;
-    regions.bounds.z = r == 2 ? high : regions.bounds.z;
-    regions.bounds.w = r == 3 ? high : regions.bounds.w;
     low = high;
     below = share;
   }
