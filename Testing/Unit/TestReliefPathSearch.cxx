@@ -133,7 +133,8 @@ TEST(ReliefPathSearch, StraightJointsAreNotRevolved)
     EXPECT_NEAR(DepthAt(vec2(u, 0.5f + 0.03f)), 0.5f, 1e-5f) << u;
   }
   // rays that run along the centre line across the joints, and down into the notch
-  const ReliefHit along = reliefSearchPathFeatures(Ray(vec2(0.35f, 0.5f), vec3(1.0f, 0.0f, 4.0f)), 0, 0);
+  const ReliefHit along =
+    reliefSearchPathFeatures(Ray(vec2(0.35f, 0.5f), vec3(1.0f, 0.0f, 4.0f)), 0, 0);
   EXPECT_NEAR(along.position.z, 0.0f, 1e-6f);
   const ReliefHit notch =
     reliefSearchPathFeatures(Ray(vec2(0.45f, 0.53f), vec3(0.2f, 0.0f, 1.0f)), 0, 0);

@@ -258,8 +258,7 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
   reliefFootprintCount = 0;
   float reach = reliefPathPixelReach(fragment.tcoordAlongX, fragment.tcoordAlongY);
   // (no walk, and no nearest feature, where DepthScale is 0)
-  bool near =
-    reliefDepthScale > 0.0 && reliefPathNearest.gap <= reach;
+  bool near = reliefDepthScale > 0.0 && reliefPathNearest.gap <= reach;
   ReliefRay ray = reliefScreenViewRay(frame, fragment);
   ReliefPathNearest nearest = reliefPathNearest;
   ReliefPathRegions regions;
@@ -338,8 +337,7 @@ vec3 reliefShadeFootprint(
   reliefFootprintCount = 0;
   float side = min(length(fragment.tcoordAlongX * reliefTextureSize),
     length(fragment.tcoordAlongY * reliefTextureSize));
-  float searched =
-    reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
+  float searched = reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
 #ifdef RELIEF_INPUT_NORMALS
   searched = 0.0;
 #endif

@@ -13,9 +13,9 @@
 // join without gaps and a path ends round (s5.4): the union of the elements is the profile
 // swept along the whole path. Where the path goes on exactly straight (the pieces of a
 // split segment, ExactJointRadians) the element ends at the plane across its end
-// instead, its neighbour's straight part going on: that is the sweep (a profile whose inside does not
-// reach its middle at some depth would bulge there, revolved), and a ray that passes the
-// joint meets no revolved facet. Each profile facet, with the perturbation's linear scale,
+// instead, its neighbour's straight part going on: that is the sweep (a profile whose
+// inside does not reach its middle at some depth would bulge there, revolved), and a ray
+// that passes the joint meets no revolved facet. Each profile facet, with the perturbation's linear scale,
 // is met by a straight ray where a linear function of t vanishes (s5.2), each revolved
 // facet where a quadratic does.
 //
