@@ -93,6 +93,13 @@ vec2 reliefInverseRun(ReliefGridRay grid)
   return vec2(1.0f / max(abs(grid.direction.x), 1e-30f), 1.0f / max(abs(grid.direction.y), 1e-30f));
 }
 
+// The cell the ray goes on into from `cell`, whose next column and row it crosses at
+// next.x and next.y (reliefCrossings).
+vec2 reliefStepCell(vec2 cell, vec2 next, vec2 signs)
+{
+  return next.x < next.y ? vec2(cell.x + signs.x, cell.y) : vec2(cell.x, cell.y + signs.y);
+}
+
 // Parameters where the ray crosses x = bounds.x and y = bounds.y.
 vec2 reliefCrossings(ReliefGridRay grid, vec2 bounds, vec2 signs, vec2 inverseRun)
 {
@@ -123,14 +130,7 @@ ReliefHit reliefWalkCells(ReliefRay ray, ReliefGridRay grid, float tStart, float
     {
       break;
     }
-    if (next.x < next.y)
-    {
-      cell.x += signs.x;
-    }
-    else
-    {
-      cell.y += signs.y;
-    }
+    cell = reliefStepCell(cell, next, signs);
     tIn = tOut;
   }
   return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)

@@ -935,14 +935,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
       {
         break;
       }
-      if (next.x < next.y)
-      {
-        cell.x += signs.x;
-      }
-      else
-      {
-        cell.y += signs.y;
-      }
+      cell = reliefStepCell(cell, next, signs);
       tIn = tOut;
     }
     if (i >= RELIEF_MAX_ITERATIONS)
@@ -972,14 +965,7 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
     {
       break;
     }
-    if (next.x < next.y)
-    {
-      cell.x += signs.x;
-    }
-    else
-    {
-      cell.y += signs.y;
-    }
+    cell = reliefStepCell(cell, next, signs);
     tIn = tOut;
   }
   reliefPathNearest = nearest;
