@@ -15,9 +15,9 @@
 // split segment, ExactJointRadians) the element ends at the plane across its end
 // instead, its neighbour's straight part going on: that is the sweep (a profile whose
 // inside does not reach its middle at some depth would bulge there, revolved), and a ray
-// that passes the joint meets no revolved facet. Each profile facet, with the perturbation's linear scale,
-// is met by a straight ray where a linear function of t vanishes (s5.2), each revolved
-// facet where a quadratic does.
+// that passes the joint meets no revolved facet. Each profile facet, with the
+// perturbation's linear scale, is met by a straight ray where a linear function of t
+// vanishes (s5.2), each revolved facet where a quadratic does.
 //
 // The includer defines RELIEF_PATH_TEXEL(index), texel `index` (int) of the data texture,
 // and RELIEF_PATH_CELL(cell), the grid texel of cell (vec2, whole numbers, repeating).
@@ -181,14 +181,27 @@ int reliefPathCrosses(vec2 a, vec2 b, float x, float y)
   return x < b.x + (y - b.y) * (a.x - b.x) / (a.y - b.y) ? 1 : 0;
 }
 
+// Point k of a profile from the texel that holds it (`pair`: points are two a texel, the
+// texel of k / 2).
+vec2 reliefPathPairPoint(vec4 pair, int k)
+{
+  return k % 2 == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+}
+
+// The last point of the element's profile, from which the profile closes to its first.
+vec2 reliefPathLastPoint(ReliefPathElement element)
+{
+  return reliefPathPairPoint(
+    RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2), element.points - 1);
+}
+
 // Whether (x, y0) and (x, y1) lie inside the profile closed by its last-to-first segment
 // (even-odd): bits 1 and 2. Its points are read two a texel.
 int reliefPathInsideProfile(ReliefPathElement element, float x, float y0, float y1)
 {
   int crossings0 = 0;
   int crossings1 = 0;
-  vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
-  vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  vec2 previous = reliefPathLastPoint(element);
   for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; k += 2)
   {
     vec4 pair = RELIEF_PATH_TEXEL(element.profile + k / 2);
@@ -564,16 +577,14 @@ ReliefPathEvent reliefPathElementEvents(
   bool aboveBase = min(ray.origin.z + after * ray.direction.z,
                      ray.origin.z + best.t * ray.direction.z) < base;
   ReliefPathSweep sweep = reliefPathSweepOf(element, ray, base);
-  vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
-  vec2 lastPoint = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
+  vec2 lastPoint = reliefPathLastPoint(element);
   vec2 previous = lastPoint;
   bool previousSide = reliefPathSide(sweep, previous);
-  vec4 pair = last;
+  vec4 pair = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
   {
-    bool first = k % 2 == 0;
-    pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
-    vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    pair = k % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = reliefPathPairPoint(pair, k);
     bool side = reliefPathSide(sweep, point);
     if (side != previousSide)
     {
@@ -598,7 +609,7 @@ ReliefPathEvent reliefPathElementEvents(
     int i = k < element.points ? k : k - element.points;
     previous = i == 0 ? lastPoint : previous;
     pair = i % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + i / 2) : pair;
-    vec2 point = i % 2 == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    vec2 point = reliefPathPairPoint(pair, i);
     best = reliefPathRevolvedEvents(best, element, ray, base, previous, point, after, end);
     previous = point;
   }
@@ -607,7 +618,8 @@ ReliefPathEvent reliefPathElementEvents(
   if (sweep.along1 != 0.0f)
   {
     float tStart = (element.rounded & 1) == 0 ? -sweep.along0 / sweep.along1 : -1e30f;
-    float tEnd = (element.rounded & 2) == 0 ? (element.span - sweep.along0) / sweep.along1 : -1e30f;
+    float tEnd =
+      (element.rounded & 2) == 0 ? (element.span - sweep.along0) / sweep.along1 : -1e30f;
     vec3 normal = vec3(element.axis.x, element.axis.y, 0.0f);
     best = reliefPathKeep(best, tStart, after, normal, element.material);
     best = reliefPathKeep(best, tEnd, after, normal, element.material);
@@ -617,9 +629,8 @@ ReliefPathEvent reliefPathElementEvents(
   previous = lastPoint;
   for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < walls; ++k)
   {
-    bool first = k % 2 == 0;
-    pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
-    vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    pair = k % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = reliefPathPairPoint(pair, k);
     if ((point.y > RELIEF_PATH_OPENING) != (previous.y > RELIEF_PATH_OPENING))
     {
       float opening = point.x +
@@ -1112,9 +1123,8 @@ ReliefPathRegions reliefPathRegions(
   // beside the straight part wherever the rays come within reach, from depth 0 down
   float largest = max(element.scaleStart, element.scaleEnd);
   float reach = element.halfWidth * element.extent * largest + halfAcross;
-  float deepest = base + max(element.bottom, 0.0f) * largest;
   float top = ray.origin.z;
-  float bottom = deepest;
+  float bottom = base + max(element.bottom, 0.0f) * largest;
   if (abs(slantAcross) > 1e-9f)
   {
     float d0 = base + (-reach - across) / slantAcross;
@@ -1151,14 +1161,12 @@ ReliefPathRegions reliefPathRegions(
   float scale = mix(element.scaleStart, element.scaleEnd, clamp(along / element.span, 0.0f, 1.0f));
   float breaks[3];
   int breakCount = 0;
-  vec4 last = RELIEF_PATH_TEXEL(element.profile + (element.points - 1) / 2);
-  vec2 previous = (element.points - 1) % 2 == 0 ? vec2(last.x, last.y) : vec2(last.z, last.w);
-  vec4 pair = last;
+  vec2 previous = reliefPathLastPoint(element);
+  vec4 pair = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points && breakCount <= 3; ++k)
   {
-    bool first = k % 2 == 0;
-    pair = first ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
-    vec2 point = first ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
+    pair = k % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = reliefPathPairPoint(pair, k);
     // the point, and where the segment to it crosses the base
     bool crosses = point.y != 0.0f && previous.y != 0.0f && (point.y > 0.0f) != (previous.y > 0.0f);
     float meets = crosses ? point.x - point.y * (previous.x - point.x) / (previous.y - point.y) : 0.0f;
