@@ -764,10 +764,10 @@ std::vector<int> vtkPathFeatureTextureFilter::ListCells(std::vector<int>& offset
   return lists;
 }
 
-std::vector<int> vtkPathFeatureTextureFilter::StraightJoins() const
+std::vector<int> vtkPathFeatureTextureFilter::Joins() const
 {
   const std::vector<Element>& elements = this->Internal->Elements;
-  const double straight = std::cos(StraightJointDegrees * M_PI / 180.0);
+  const double smooth = std::cos(SmoothJointDegrees * M_PI / 180.0);
   const double exact = std::cos(ExactJointRadians);
   std::vector<int> joins(elements.size(), 0);
   for (size_t e = 1; e < elements.size(); ++e)
@@ -776,7 +776,7 @@ std::vector<int> vtkPathFeatureTextureFilter::StraightJoins() const
     const Element& element = elements[e];
     const double turn = glm::dot(glm::normalize(previous.End - previous.Start),
       glm::normalize(element.End - element.Start));
-    if (previous.Path == element.Path && turn >= straight)
+    if (previous.Path == element.Path && turn >= smooth)
     {
       joins[e - 1] |= turn >= exact ? 2 + 8 : 2;
       joins[e] |= turn >= exact ? 1 + 4 : 1;
@@ -934,7 +934,7 @@ void vtkPathFeatureTextureFilter::WriteTextures(const std::vector<int>& offsets,
       path.Material >= 0 ? materialTexels[path.Material] : -1.0, path.Priority);
     write(pathTexels[p] + 1, path.ScaleStart, path.ScaleEnd, path.Length, 0);
   }
-  const std::vector<int> joins = this->StraightJoins();
+  const std::vector<int> joins = this->Joins();
   for (size_t e = 0; e < internal.Elements.size(); ++e)
   {
     const Element& element = internal.Elements[e];

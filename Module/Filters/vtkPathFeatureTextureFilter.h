@@ -51,8 +51,8 @@
  * - a path: (half width, profile texel, material texel or -1, priority),
  *   (scale at start, scale at end, length, 0);
  * - an element, a straight piece of a path: (start, end), (path texel, arc length along
- *   the path at its start, at its end, joins: 1 where the path's previous element goes on
- *   straight on from its start, + 2 where the next goes on from its end, StraightJointDegrees;
+ *   the path at its start, at its end, joins: 1 where the path's previous element goes
+ *   on from its start, + 2 where the next goes on from its end, SmoothJointDegrees;
  *   + 4 and + 8 where they go on exactly, ExactJointRadians);
  *   a quadratic segment is stored as pieces whose chords stray at most 1/50 of the
  *   feature's half width from the curve;
@@ -100,10 +100,12 @@ public:
   /// Segments longer than this, in tiles, are split, so that a cell finds its copy of an
   /// element within half a tile.
   static constexpr double MaximumElementLength = 0.25;
-  /// Consecutive elements of a path that turn by at most this are one straight feature to
-  /// the antialiasing's region sampling (s5.7), whose rays may run along a feature far past
-  /// the pixel: the pieces of a split segment (MaximumElementLength), not a curve's.
-  static constexpr double StraightJointDegrees = 0.01;
+  /// Consecutive elements of a path that turn by at most this are one feature to the
+  /// antialiasing's region sampling (s5.7), which goes on straight through their joint
+  /// where the turn strays less than an eighth of the pixel within its footprint: the
+  /// pieces of a split segment (MaximumElementLength) and of a curve (a quadratic
+  /// segment's, or a polyline's that follows one), not a corner.
+  static constexpr double SmoothJointDegrees = 15.0;
   /// Consecutive elements that turn by at most this go on exactly: the shader ends each at
   /// the plane across the joint, not revolved about it (its neighbour's straight part goes
   /// on; where they turn more the planes would leave a sliver of the width times the turn).
@@ -200,7 +202,7 @@ private:
   /// Every cell's elements, in element order: cell c's are lists[offsets[c], offsets[c+1]).
   std::vector<int> ListCells(std::vector<int>& offsets);
   /// Each element's joins with its path's neighbours (the data texture's layout).
-  std::vector<int> StraightJoins() const;
+  std::vector<int> Joins() const;
   /// 0 (empty), 1 (one path, no end) or 2 (crossings and ends); notes self-crossings.
   int ClassifyCell(const int* begin, const int* end, int cell, std::vector<int>& selfCrossing);
   void WriteTextures(const std::vector<int>& offsets, const std::vector<int>& lists,

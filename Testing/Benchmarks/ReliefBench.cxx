@@ -606,6 +606,7 @@ int main(int argc, char* argv[])
     pathOptions.Width = 160;
     pathOptions.Height = 120;
     pathOptions.TruthColumns = 256;
+    pathOptions.TruthColumnsUpClose = 256;
     pathOptions.TruthLayers = 48;
     pathOptions.HeightMapSizes = { 64, 256 };
     pathOptions.Supersampling = 2;

@@ -123,28 +123,42 @@ Column Crossings(const mirror::PathTextures& textures, double u, double v)
   return column;
 }
 
-// The features as geometry: a volume of signed distances along the depth to the nearest
-// crossing of each column (positive in matter), contoured at 0, coloured by the material
-// of the nearest crossing; x = u - 0.5, y = v - 0.5, z = -depth x DepthScale.
-vtkSmartPointer<vtkPolyData> TruthGeometry(
-  const mirror::PathTextures& textures, const ReliefPathStudy::Options& options)
+// A part of the square in (u, v): [U0, U1] x [V0, V1].
+struct Window
 {
-  const int n = options.TruthColumns;
+  double U0 = 0.0;
+  double V0 = 0.0;
+  double U1 = 1.0;
+  double V1 = 1.0;
+};
+
+// The features as geometry over a window of the square: a volume of signed distances
+// along the depth to the nearest crossing of each column (positive in matter), contoured
+// at 0, coloured by the material of the nearest crossing; TruthColumns columns along the
+// window's longer side; x = u - 0.5, y = v - 0.5, z = -depth x DepthScale.
+vtkSmartPointer<vtkPolyData> TruthGeometry(const mirror::PathTextures& textures,
+  const ReliefPathStudy::Options& options, const Window& window)
+{
+  const double spacing =
+    std::max(window.U1 - window.U0, window.V1 - window.V0) / options.TruthColumns;
+  const int nu = static_cast<int>(std::ceil((window.U1 - window.U0) / spacing - 1e-9));
+  const int nv = static_cast<int>(std::ceil((window.V1 - window.V0) / spacing - 1e-9));
   const int layers = options.TruthLayers;
   const double deepest = textures.Texel(0).y;
   const double top = -0.05 * deepest; // air above the polygons, so protrusions close
   const double step = (deepest + 0.02 - top) / layers;
-  std::vector<Column> columns(static_cast<size_t>(n + 1) * (n + 1));
+  std::vector<Column> columns(static_cast<size_t>(nu + 1) * (nv + 1));
   vtkSMPTools::For(0, static_cast<vtkIdType>(columns.size()), [&](vtkIdType begin, vtkIdType last) {
     for (vtkIdType c = begin; c < last; ++c)
     {
-      columns[c] = Crossings(textures, double(c % (n + 1)) / n, double(c / (n + 1)) / n);
+      columns[c] = Crossings(textures, window.U0 + spacing * double(c % (nu + 1)),
+        window.V0 + spacing * double(c / (nu + 1)));
     }
   });
   vtkNew<vtkImageData> volume;
-  volume->SetDimensions(n + 1, n + 1, layers + 1);
-  volume->SetSpacing(1.0 / n, 1.0 / n, step * DepthScale);
-  volume->SetOrigin(-0.5, -0.5, -(deepest + 0.02) * DepthScale);
+  volume->SetDimensions(nu + 1, nv + 1, layers + 1);
+  volume->SetSpacing(spacing, spacing, step * DepthScale);
+  volume->SetOrigin(window.U0 - 0.5, window.V0 - 0.5, -(deepest + 0.02) * DepthScale);
   volume->AllocateScalars(VTK_FLOAT, 1);
   auto* field = static_cast<float*>(volume->GetScalarPointer());
   vtkSMPTools::For(0, static_cast<vtkIdType>(columns.size()), [&](vtkIdType begin, vtkIdType last) {
@@ -185,9 +199,9 @@ vtkSmartPointer<vtkPolyData> TruthGeometry(
   for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
   {
     const double* point = surface->GetPoint(p);
-    const int i = std::clamp(int(std::lround((point[0] + 0.5) * n)), 0, n);
-    const int j = std::clamp(int(std::lround((point[1] + 0.5) * n)), 0, n);
-    const Column& column = columns[static_cast<size_t>(j) * (n + 1) + i];
+    const int i = std::clamp(int(std::lround((point[0] + 0.5 - window.U0) / spacing)), 0, nu);
+    const int j = std::clamp(int(std::lround((point[1] + 0.5 - window.V0) / spacing)), 0, nv);
+    const Column& column = columns[static_cast<size_t>(j) * (nu + 1) + i];
     const double depth = -point[2] / DepthScale;
     float material = -1.0f;
     double nearest = 1e30;
@@ -275,6 +289,49 @@ void Aim(vtkRenderer* renderer, const View& view, const double bounds[6])
     camera->Dolly(view.Dolly);
   }
   renderer->ResetCameraClippingRange(bounds);
+}
+
+// The part of the square the renderer's camera sees (through a 9 x 9 grid of its pixels,
+// between the features' top and bottom planes), a little enlarged; all of it where a ray
+// runs off above the features.
+Window VisibleWindow(vtkRenderer* renderer, double deepest)
+{
+  const int* size = renderer->GetSize();
+  const double planes[2] = { 0.05 * deepest * DepthScale, -(deepest + 0.02) * DepthScale };
+  Window seen{ 1.0, 1.0, 0.0, 0.0 };
+  for (int i = 0; i <= 8; ++i)
+  {
+    for (int j = 0; j <= 8; ++j)
+    {
+      double ends[2][4];
+      for (int k = 0; k < 2; ++k)
+      {
+        renderer->SetDisplayPoint(size[0] * i / 8.0, size[1] * j / 8.0, k);
+        renderer->DisplayToWorld();
+        renderer->GetWorldPoint(ends[k]);
+        for (int a = 0; a < 3; ++a)
+        {
+          ends[k][a] /= ends[k][3];
+        }
+      }
+      for (double z : planes)
+      {
+        const double run = ends[1][2] - ends[0][2];
+        const double t = run != 0.0 ? (z - ends[0][2]) / run : -1.0;
+        if (!(t >= 0.0 && t <= 1.0))
+        {
+          return Window();
+        }
+        const double u = ends[0][0] + t * (ends[1][0] - ends[0][0]) + 0.5;
+        const double v = ends[0][1] + t * (ends[1][1] - ends[0][1]) + 0.5;
+        seen = { std::min(seen.U0, u), std::min(seen.V0, v), std::max(seen.U1, u),
+          std::max(seen.V1, v) };
+      }
+    }
+  }
+  const double margin = 0.01;
+  return { std::max(seen.U0 - margin, 0.0), std::max(seen.V0 - margin, 0.0),
+    std::min(seen.U1 + margin, 1.0), std::min(seen.V1 + margin, 1.0) };
 }
 
 // Truth pixels on the outline of a feature: in one (deeper or higher than the base plane
@@ -377,7 +434,7 @@ std::string Study(const Options& options)
   const double deepest = textures.Texel(0).y;
   const double base = textures.Texel(0).x;
 
-  vtkSmartPointer<vtkPolyData> truth = TruthGeometry(textures, options);
+  vtkSmartPointer<vtkPolyData> truth = TruthGeometry(textures, options, Window());
   vtkNew<vtkPolyDataMapper> truthMapper;
   truthMapper->SetInputData(truth);
   truthMapper->SetColorModeToDirectScalars();
@@ -452,9 +509,28 @@ std::string Study(const Options& options)
 
   std::vector<std::vector<Measurement>> results(std::size(Views));
   std::vector<ReliefMetrics::Capture> middle;
+  std::ostringstream partTruth;
   for (size_t v = 0; v < std::size(Views); ++v)
   {
     Aim(renderer, Views[v], bounds);
+    // a view of part of the square (up close) gets a finer truth over that part: there a
+    // column is a pixel, and the contour's bevel along each sharp edge shows
+    const Window seen = VisibleWindow(renderer, deepest);
+    const bool part = (seen.U1 - seen.U0) * (seen.V1 - seen.V0) < 0.5;
+    if (part)
+    {
+      ReliefPathStudy::Options fine = options;
+      fine.TruthColumns = options.TruthColumnsUpClose;
+      truthMapper->SetInputData(TruthGeometry(textures, fine, seen));
+      partTruth << "; up close, over the part in view (u in [" << std::setprecision(2)
+                << seen.U0 << ", " << seen.U1 << "], v in [" << seen.V0 << ", " << seen.V1
+                << "]), from " << fine.TruthColumns << " columns along its longer side ("
+                << truthMapper->GetInput()->GetNumberOfPolys() << " triangles)";
+    }
+    else
+    {
+      truthMapper->SetInputData(truth);
+    }
     fineRenderer->GetActiveCamera()->DeepCopy(renderer->GetActiveCamera());
     fineRenderer->ResetCameraClippingRange(bounds);
     fineWindow->Render();
@@ -525,7 +601,8 @@ std::string Study(const Options& options)
       << "casts none). Truth: the solid the features define,\n"
       << "contoured from " << options.TruthColumns << "^2 x " << options.TruthLayers
       << " signed distances to the exact vertical crossings (" << truth->GetNumberOfPolys()
-      << " triangles), drawn by VTK's stock\nmapper; colour judged against it rendered "
+      << " triangles)" << partTruth.str()
+      << ", drawn by VTK's stock\nmapper; colour judged against it rendered "
       << options.Supersampling << "x" << options.Supersampling
       << " larger and averaged. Height maps: each texel's first crossing straight\n"
       << "down (overhangs lost) and the material there as a colour texture, drawn by the\n"

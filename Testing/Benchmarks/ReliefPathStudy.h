@@ -22,6 +22,7 @@ struct Options
   int Height = 360;
   int TruthColumns = 1024;   ///< the truth's volume: columns along u and v
   int TruthLayers = 128;     ///< and layers through the depth
+  int TruthColumnsUpClose = 2048; ///< along the longer side of the part a close view sees
   std::vector<int> HeightMapSizes = { 512, 2048 };
   int Supersampling = 4;     ///< of the truth, per axis, for the colour reference
   int Frames = 3;            ///< timed frames per row and round, after warm-up

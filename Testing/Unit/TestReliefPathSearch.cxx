@@ -374,16 +374,18 @@ ReliefPathRegions RegionsOf(const Pixel& pixel)
 // How far the share of the pixel that each surface takes in its regions (which must be
 // taken, RegionsOf) is from what 96 x 96 rays through the pixel see; the surfaces (the
 // facets and the base: planes in (u, v, depth)) are told apart by their normals and their
-// planes' offsets along them (a groove's flat floor from the base).
-double RegionShareError(const Pixel& pixel)
+// planes' offsets along them (a groove's flat floor from the base); across a path's bend
+// of `turn` radians, the facets of one side by their normals alone.
+double RegionShareError(const Pixel& pixel, float turn = 0.0f)
 {
   const ReliefRay ray = Ray(pixel.UV, pixel.Direction);
   const ReliefPathRegions regions = RegionsOf(pixel);
   const ReliefPathNearest nearest = reliefPathNearest;
   std::vector<std::pair<vec4, double>> expected;
   std::vector<std::pair<vec4, double>> got;
-  const auto same = [](vec4 a, vec4 b) {
-    return dot(vec3(a), vec3(b)) > 0.9999f && std::abs(a.w - b.w) < 1e-3f;
+  const auto same = [turn](vec4 a, vec4 b) {
+    return dot(vec3(a), vec3(b)) > std::cos(turn) - 1e-4f &&
+      (turn > 0.0f || std::abs(a.w - b.w) < 1e-3f);
   };
   auto count = [&same](std::vector<std::pair<vec4, double>>& shares, const ReliefHit& hit,
                  double weight) {
@@ -495,25 +497,32 @@ TEST(ReliefPathSearch, RegionSamplingMatchesThePixelSampledDensely)
   EXPECT_GT(RegionsOf({ vec2(0.4f, 0.3f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
 }
 
-// Where a path goes on straight from one element to the next (a segment split into
-// pieces, MaximumElementLength), the regions take it as one element across the joint; at
-// a bend of 6 degrees (a curve's pieces turn by as much), as at a corner or an end, they
-// refuse: the rays run along the feature as they descend, past the bend by more than the
-// pixel.
-TEST(ReliefPathSearch, RegionSamplingGoesOnThroughStraightJoints)
+// Where a path goes on from one element to the next without a corner (a segment split
+// into pieces, MaximumElementLength; a curve's pieces), the regions take it as one
+// straight element across the joint, as long as the turn strays from straight by less
+// than an eighth of the pixel where its rays pass: their shares stay within a sixteenth
+// of the dense pixel's (supersampling's four rays are a quarter apart). Beyond
+// that (rays that run far along the feature as they descend, past a bend), and at a
+// corner (SmoothJointDegrees), as at an end, they refuse.
+TEST(ReliefPathSearch, RegionSamplingGoesOnThroughSmoothJoints)
 {
   std::mt19937 random(58);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   Scene scene;
   scene.Profiles = { VGroove };
-  // split at 0.3, 0.5 and 0.7; bent by 6 degrees at (0.5, 0.7)
+  // split at 0.3, 0.5 and 0.7; bent by 6 degrees at (0.5, 0.7); a corner of 20 degrees
+  // at (0.5, 0.9)
   scene.Paths.push_back({ { { 0.1, 0.3 }, { 0.9, 0.3 } }, 0.1, 0 });
-  const double bend = 6.0 * M_PI / 180.0;
-  scene.Paths.push_back(
-    { { { 0.3, 0.7 }, { 0.5, 0.7 }, { 0.5 + 0.2 * std::cos(bend), 0.7 + 0.2 * std::sin(bend) } },
-      0.1, 0 });
+  const auto bent = [](double degrees, double v) {
+    const double turn = degrees * M_PI / 180.0;
+    return std::vector<dvec2>{ { 0.3, v }, { 0.5, v },
+      { 0.5 + 0.2 * std::cos(turn), v + 0.2 * std::sin(turn) } };
+  };
+  scene.Paths.push_back({ bent(6.0, 0.7), 0.1, 0 });
+  scene.Paths.push_back({ bent(20.0, 0.9), 0.1, 0 });
   Built built(scene);
-  for (const vec2 joint : { vec2(0.3f, 0.3f), vec2(0.5f, 0.3f), vec2(0.7f, 0.3f) })
+  for (const vec2 joint :
+    { vec2(0.3f, 0.3f), vec2(0.5f, 0.3f), vec2(0.7f, 0.3f), vec2(0.5f, 0.7f) })
   {
     int sampled = 0;
     for (int k = 0; k < 40; ++k)
@@ -523,25 +532,36 @@ TEST(ReliefPathSearch, RegionSamplingGoesOnThroughStraightJoints)
       if (RegionsOf(pixel).count > 0)
       {
         sampled += 1;
-        EXPECT_LE(RegionShareError(pixel), 0.02) << Describe(pixel);
+        // past a bend, what the straight regions miss: the turn strays by up to an eighth
+        // of the pixel, across a wedge of at most half of it
+        EXPECT_LE(RegionShareError(pixel, joint.y > 0.5f ? 0.11f : 0.0f),
+          joint.y > 0.5f ? 0.0625 : 0.02)
+          << Describe(pixel);
       }
     }
-    EXPECT_GE(sampled, 30) << joint.x << " " << joint.y;
+    EXPECT_GE(sampled, joint.y > 0.5f ? 20 : 30) << joint.x << " " << joint.y;
   }
   const vec2 across(0.0f, 0.02f);
   const vec2 along(0.02f, 0.0f);
-  for (const vec2& uv : { vec2(0.3f, 0.3f), vec2(0.5f, 0.3f) })
+  for (const vec2& uv : { vec2(0.3f, 0.3f), vec2(0.5f, 0.3f), vec2(0.5f, 0.7f) })
   {
     EXPECT_GT(RegionsOf({ uv, vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
   }
-  EXPECT_EQ(RegionsOf({ vec2(0.5f, 0.7f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
-  EXPECT_GT(RegionsOf({ vec2(0.4f, 0.7f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
-  // the pieces that go on straight are one feature to the walk's nearest: no second near
-  for (const vec2 uv : { vec2(0.3f, 0.3f), vec2(0.5f, 0.32f), vec2(0.7f, 0.28f) })
+  // rays that run along the bent groove as they descend pass the bend by more than the
+  // pixel; the straight groove's go on
+  EXPECT_EQ(RegionsOf({ vec2(0.5f, 0.7f), vec3(0.1f, 0.0f, 1.0f), across, along }).count, 0);
+  EXPECT_GT(RegionsOf({ vec2(0.5f, 0.3f), vec3(0.1f, 0.0f, 1.0f), across, along }).count, 0);
+  EXPECT_EQ(RegionsOf({ vec2(0.5f, 0.9f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
+  EXPECT_GT(RegionsOf({ vec2(0.4f, 0.9f), vec3(0.0f, 0.0f, 1.0f), across, along }).count, 0);
+  // the pieces that go on are one feature to the walk's nearest: no second near
+  for (const vec2 uv :
+    { vec2(0.3f, 0.3f), vec2(0.5f, 0.32f), vec2(0.7f, 0.28f), vec2(0.5f, 0.7f) })
   {
     RegionsOf({ uv, vec3(0.0f, 0.0f, 1.0f), across, along });
     EXPECT_GT(reliefPathNearest.second, 0.05f) << uv.x << " " << uv.y;
   }
+  RegionsOf({ vec2(0.5f, 0.9f), vec3(0.0f, 0.0f, 1.0f), across, along });
+  EXPECT_LT(reliefPathNearest.second, 0.05f);
 }
 
 // Where the rays that fall into a groove run along it, below the view ray's hit, into

@@ -41,8 +41,8 @@ float reliefPathHitMaterial;
 
 // The element a ray came closest to, and how close it and any other came, in (u, v): the
 // least reliefPathGap of the elements listed where it passed below a cell's top; 1e30
-// where none. The elements of its path that go on straight from it (its joins,
-// vtkPathFeatureTextureFilter::StraightJointDegrees) are one feature with it, not others.
+// where none. The elements of its path that go on from it without a corner (its joins,
+// vtkPathFeatureTextureFilter::SmoothJointDegrees) are one feature with it, not others.
 struct ReliefPathNearest
 {
   float gap;
@@ -64,8 +64,8 @@ ReliefPathNearest reliefPathNoneNear()
   return nearest;
 }
 
-// Whether `element` (a data texel) is the nearest or one that goes on straight from it
-// (the data's elements of a path are two texels apart).
+// Whether `element` (a data texel) is the nearest or one that goes on from it (the
+// data's elements of a path are two texels apart).
 bool reliefPathSameFeature(ReliefPathNearest nearest, int element)
 {
   return element >= 0 &&
@@ -74,8 +74,8 @@ bool reliefPathSameFeature(ReliefPathNearest nearest, int element)
 }
 
 // `nearest` with element's gap near `near` counted (-1: an element other than nearest's).
-// The nearest element or one that goes on straight from it takes its place where nearer,
-// and is no second.
+// The nearest element or one that goes on from it takes its place where nearer, and is no
+// second.
 ReliefPathNearest reliefPathNearer(
   ReliefPathNearest nearest, float gap, int element, int joins, vec2 near)
 {
@@ -291,9 +291,20 @@ float reliefPathSpan(int texel)
   return length(vec2(ends.z - ends.x, ends.w - ends.y));
 }
 
+// The sine of the turn from element `texel` to the next of its path.
+float reliefPathTurn(int texel)
+{
+  vec4 ends = RELIEF_PATH_TEXEL(texel);
+  vec4 nextEnds = RELIEF_PATH_TEXEL(texel + 2);
+  vec2 axis = normalize(vec2(ends.z - ends.x, ends.w - ends.y));
+  vec2 nextAxis = normalize(vec2(nextEnds.z - nextEnds.x, nextEnds.w - nextEnds.y));
+  return abs(axis.x * nextAxis.y - axis.y * nextAxis.x);
+}
+
 // Element `texel` of a cell's list, placed near `near`. Element e alone (a list of -e:
-// region sampling's walks, reliefPathElementWalk) goes on through its straight joins, as
-// far as the elements there reach, the perturbation's scale going on as along its path.
+// region sampling's walks, reliefPathElementWalk) goes on straight through its joins, as
+// far as the elements there reach, the perturbation's scale going on as along its path
+// (reliefPathRegions judges where the path's turn there strays too far from that).
 ReliefPathElement reliefPathListedElement(int list, int texel, vec2 near)
 {
   ReliefPathElement element = reliefPathElement(texel, near);
@@ -1062,9 +1073,10 @@ bool reliefPathAloneThere(ReliefPathNearest nearest, ReliefRay ray, float t0, fl
 // by the share of the pixel there. Spread across the element, the pixel (tcoord per pixel
 // along x and y, a parallelogram) is the sum of two boxes: a trapezoid. The regions are up
 // to four offsets across (in (u, v), along `right`) with their weights, for the nearest
-// element of the view ray's walk (reliefPathNearest), on through its straight joins; none
-// where the rays pass an end of it that no element goes on straight from, or cells that
-// list other features, where the profile both cuts and adds (the wall up from its opening
+// element of the view ray's walk (reliefPathNearest), on straight through its joins; none
+// where the rays pass an end of it that no element goes on from, or a joint where the
+// path's turn strays more than an eighth of the pixel from straight, or cells that list
+// other features, where the profile both cuts and adds (the wall up from its opening
 // would change what is seen between those points) or where more than four.
 struct ReliefPathRegions
 {
@@ -1140,7 +1152,19 @@ ReliefPathRegions reliefPathRegions(
   {
     float along0 = along + (top - base) * slantAlong;
     float along1 = along + (bottom - base) * slantAlong;
-    if (min(along0, along1) < halfAlong || max(along0, along1) > element.span - halfAlong)
+    float first = min(along0, along1) - halfAlong;
+    float last = max(along0, along1) + halfAlong;
+    // how far the path strays past its joints from the straight element, to the rays
+    bool before = (element.joins & 1) != 0;
+    bool after = (element.joins & 2) != 0;
+    float startJoint = before ? reliefPathSpan(nearest.element - 2) : 0.0f;
+    float endJoint = startJoint + reliefPathSpan(nearest.element);
+    float strayBefore =
+      before ? reliefPathTurn(nearest.element - 2) * max(startJoint - first, 0.0f) : 0.0f;
+    float strayAfter =
+      after ? reliefPathTurn(nearest.element) * max(last - endJoint, 0.0f) : 0.0f;
+    if (first < 0.0f || last > element.span ||
+      max(strayBefore, strayAfter) > 0.25f * halfAcross)
     {
       return regions;
     }
