@@ -102,7 +102,7 @@ public:
   static constexpr double MaximumElementLength = 0.25;
   /// Consecutive elements of a path that turn by at most this are one feature to the
   /// antialiasing's region sampling (s5.7), which goes on straight through their joint
-  /// where the turn strays less than an eighth of the pixel within its footprint: the
+  /// where their outline strays less than an eighth of the pixel within its footprint: the
   /// pieces of a split segment (MaximumElementLength) and of a curve (a quadratic
   /// segment's, or a polyline's that follows one), not a corner.
   static constexpr double SmoothJointDegrees = 15.0;

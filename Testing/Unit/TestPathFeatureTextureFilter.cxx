@@ -171,6 +171,36 @@ TEST(PathFeatureTextureFilter, CurvesBecomePiecesWithinTolerance)
       nearest = std::min(nearest, glm::length(curve - middle));
     }
     EXPECT_LE(nearest, 0.02 * halfWidth + 1e-6) << "element " << e;
+    // the pieces go on smoothly, not exactly (region sampling goes on through them, the
+    // shader revolves their ends): 1 to the previous, 2 to the next
+    const float joins = run.Textures.Texel(first + 3 + 2 * static_cast<int>(e)).w;
+    EXPECT_EQ(joins, (e > 0 ? 1.0f : 0.0f) + (e + 1 < elements ? 2.0f : 0.0f)) << e;
+  }
+}
+
+// A corner that turns by more than SmoothJointDegrees joins nothing: region sampling
+// stops at it; by less, the two segments go on (not exactly).
+TEST(PathFeatureTextureFilter, CornersJoinNothing)
+{
+  for (const double degrees : { 20.0, 10.0 })
+  {
+    const double turn = degrees * M_PI / 180.0;
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0.1, 0.5, 0);
+    points->InsertNextPoint(0.3, 0.5, 0);
+    points->InsertNextPoint(0.3 + 0.2 * std::cos(turn), 0.5 + 0.2 * std::sin(turn), 0);
+    vtkNew<vtkCellArray> lines;
+    const vtkIdType ids[3] = { 0, 1, 2 };
+    lines->InsertNextCell(3, ids);
+    vtkNew<vtkPolyData> paths;
+    paths->SetPoints(points);
+    paths->SetLines(lines);
+    FilterRun run(paths);
+    ASSERT_EQ(run.Filter->GetNumberOfElements(), 2);
+    const int first = 1 + 6; // after the header, the default profile and the path
+    const bool smooth = degrees <= vtkPathFeatureTextureFilter::SmoothJointDegrees;
+    EXPECT_EQ(run.Textures.Texel(first + 3).w, smooth ? 2.0f : 0.0f) << degrees;
+    EXPECT_EQ(run.Textures.Texel(first + 5).w, smooth ? 1.0f : 0.0f) << degrees;
   }
 }
 

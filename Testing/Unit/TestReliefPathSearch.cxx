@@ -564,6 +564,42 @@ TEST(ReliefPathSearch, RegionSamplingGoesOnThroughSmoothJoints)
   EXPECT_LT(reliefPathNearest.second, 0.05f);
 }
 
+// At a bend the next piece's edge on the inside of the turn crosses the first one's a
+// half width times tan(turn / 2) before the joint, and lies the half width times
+// (1 / cos - 1) out at it: a wide groove's edge there moves by much of a small pixel
+// even where the rays stop short of the joint. Pixels along the inner edge of a
+// 12-degree bend of a groove 25 pixels wide are refused where their rays reach that
+// stretch, and elsewhere their regions' shares stay within a sixteenth of the dense
+// pixel's.
+TEST(ReliefPathSearch, RegionSamplingMindsWhereAWideGroovesEdgesMeetAtABend)
+{
+  Scene scene;
+  scene.Profiles = { VGroove };
+  const double turn = 12.0 * M_PI / 180.0;
+  scene.Paths.push_back(
+    { { { 0.2, 0.5 }, { 0.5, 0.5 }, { 0.5 + 0.3 * std::cos(turn), 0.5 + 0.3 * std::sin(turn) } },
+      0.1, 0 });
+  Built built(scene);
+  const float size = 0.004f;
+  int sampled = 0;
+  for (const float offset : { -3.0f, -2.0f, -1.5f, -1.0f, -0.5f, 0.0f, 0.5f, 1.0f })
+  {
+    const Pixel pixel = { vec2(0.5f + offset * size, 0.55f), vec3(0.0f, 0.0f, 1.0f),
+      vec2(size, 0.0f), vec2(0.0f, size) };
+    const int count = RegionsOf(pixel).count;
+    sampled += count > 0 ? 1 : 0;
+    if (offset == -1.5f || offset == -1.0f)
+    {
+      EXPECT_EQ(count, 0) << Describe(pixel); // their rays reach where the edges cross
+    }
+    else if (count > 0)
+    {
+      EXPECT_LE(RegionShareError(pixel, float(turn)), 0.0625) << Describe(pixel);
+    }
+  }
+  EXPECT_GE(sampled, 5);
+}
+
 // Where the rays that fall into a groove run along it, below the view ray's hit, into
 // another feature, the regions refuse (they would walk the one element alone): a pixel
 // beside a deep slot, whose rays run along it as they descend into a crossing slot.

@@ -291,14 +291,23 @@ float reliefPathSpan(int texel)
   return length(vec2(ends.z - ends.x, ends.w - ends.y));
 }
 
-// The sine of the turn from element `texel` to the next of its path.
-float reliefPathTurn(int texel)
+// How far the outline of element `texel` and the next of its path strays from the first
+// one's, straight on, up to `past` beyond their joint, where the profile reaches
+// `halfExtent` either side: the next one's edge on the inside of the turn leans out by
+// the turn, from halfExtent tan(turn / 2) before the joint, where it crosses the first
+// one's, and lies halfExtent (1 / cos - 1) out at the joint (outside the turn the ends'
+// revolved profiles fill in, less far); none where the rays stop short of all that.
+float reliefPathStray(int texel, float past, float halfExtent)
 {
   vec4 ends = RELIEF_PATH_TEXEL(texel);
   vec4 nextEnds = RELIEF_PATH_TEXEL(texel + 2);
   vec2 axis = normalize(vec2(ends.z - ends.x, ends.w - ends.y));
   vec2 nextAxis = normalize(vec2(nextEnds.z - nextEnds.x, nextEnds.w - nextEnds.y));
-  return abs(axis.x * nextAxis.y - axis.y * nextAxis.x);
+  float sine = abs(axis.x * nextAxis.y - axis.y * nextAxis.x);
+  float cosine = max(dot(axis, nextAxis), 1e-3f);
+  float lead = halfExtent * sine / (1.0f + cosine);
+  float leaning = sine * (max(past, 0.0f) + lead) + halfExtent * (1.0f - cosine);
+  return past + lead > 0.0f ? leaning / cosine : 0.0f;
 }
 
 // Element `texel` of a cell's list, placed near `near`. Element e alone (a list of -e:
@@ -1007,7 +1016,7 @@ float reliefPathStraightEnd(ReliefRay ray)
 
 // The walk of a footprint's ray from depth 0 to the deepest cut (a curved frame's ray
 // spans its range to there over t in [0, 1]: reliefQuadricFrame), through one element
-// alone (its data texel; its copy of the tile nearest to `near`), on through its straight
+// alone (its data texel; its copy of the tile nearest to `near`), on straight through its
 // joins (reliefPathListedElement), or through all of them where `element` is 0.
 ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
 {
@@ -1028,7 +1037,7 @@ float reliefPathPixelReach(vec2 alongX, vec2 alongY)
   return 0.5f * max(length(alongX + alongY), length(alongX - alongY));
 }
 
-// Whether no feature but the nearest element and those it goes on straight into comes
+// Whether no feature but the nearest element and those its path goes on into comes
 // within `reach` (the pixel's) of the view ray from t0 to t1: the stretch where the
 // pixel's rays fall into that element and run on below the view ray's hit, which
 // `nearest` did not judge. The features are those the cells there list (each extended by
@@ -1075,7 +1084,7 @@ bool reliefPathAloneThere(ReliefPathNearest nearest, ReliefRay ray, float t0, fl
 // to four offsets across (in (u, v), along `right`) with their weights, for the nearest
 // element of the view ray's walk (reliefPathNearest), on straight through its joins; none
 // where the rays pass an end of it that no element goes on from, or a joint where the
-// path's turn strays more than an eighth of the pixel from straight, or cells that list
+// path's outline strays more than an eighth of the pixel from straight, or cells that list
 // other features, where the profile both cuts and adds (the wall up from its opening
 // would change what is seen between those points) or where more than four.
 struct ReliefPathRegions
@@ -1155,14 +1164,15 @@ ReliefPathRegions reliefPathRegions(
     float first = min(along0, along1) - halfAlong;
     float last = max(along0, along1) + halfAlong;
     // how far the path strays past its joints from the straight element, to the rays
+    float halfExtent = element.halfWidth * element.extent * largest;
     bool before = (element.joins & 1) != 0;
     bool after = (element.joins & 2) != 0;
     float startJoint = before ? reliefPathSpan(nearest.element - 2) : 0.0f;
     float endJoint = startJoint + reliefPathSpan(nearest.element);
     float strayBefore =
-      before ? reliefPathTurn(nearest.element - 2) * max(startJoint - first, 0.0f) : 0.0f;
+      before ? reliefPathStray(nearest.element - 2, startJoint - first, halfExtent) : 0.0f;
     float strayAfter =
-      after ? reliefPathTurn(nearest.element) * max(last - endJoint, 0.0f) : 0.0f;
+      after ? reliefPathStray(nearest.element, last - endJoint, halfExtent) : 0.0f;
     if (first < 0.0f || last > element.span ||
       max(strayBefore, strayAfter) > 0.25f * halfAcross)
     {
