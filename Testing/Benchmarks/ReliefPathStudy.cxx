@@ -134,16 +134,15 @@ struct Window
 
 // The features as geometry over a window of the square: a volume of signed distances
 // along the depth to the nearest crossing of each column (positive in matter), contoured
-// at 0, coloured by the material of the nearest crossing; TruthColumns columns along the
-// window's longer side; x = u - 0.5, y = v - 0.5, z = -depth x DepthScale.
-vtkSmartPointer<vtkPolyData> TruthGeometry(const mirror::PathTextures& textures,
-  const ReliefPathStudy::Options& options, const Window& window)
+// at 0, coloured by the material of the nearest crossing; `columnCount` columns along the
+// window's longer side, `layers` through the depth; x = u - 0.5, y = v - 0.5, z = -depth x
+// DepthScale.
+vtkSmartPointer<vtkPolyData> TruthGeometry(
+  const mirror::PathTextures& textures, int columnCount, int layers, const Window& window)
 {
-  const double spacing =
-    std::max(window.U1 - window.U0, window.V1 - window.V0) / options.TruthColumns;
+  const double spacing = std::max(window.U1 - window.U0, window.V1 - window.V0) / columnCount;
   const int nu = static_cast<int>(std::ceil((window.U1 - window.U0) / spacing - 1e-9));
   const int nv = static_cast<int>(std::ceil((window.V1 - window.V0) / spacing - 1e-9));
-  const int layers = options.TruthLayers;
   const double deepest = textures.Texel(0).y;
   const double top = -0.05 * deepest; // air above the polygons, so protrusions close
   const double step = (deepest + 0.02 - top) / layers;
@@ -308,11 +307,7 @@ Window VisibleWindow(vtkRenderer* renderer, double deepest)
       {
         renderer->SetDisplayPoint(size[0] * i / 8.0, size[1] * j / 8.0, k);
         renderer->DisplayToWorld();
-        renderer->GetWorldPoint(ends[k]);
-        for (int a = 0; a < 3; ++a)
-        {
-          ends[k][a] /= ends[k][3];
-        }
+        renderer->GetWorldPoint(ends[k]); // (divided through by w)
       }
       for (double z : planes)
       {
@@ -434,7 +429,8 @@ std::string Study(const Options& options)
   const double deepest = textures.Texel(0).y;
   const double base = textures.Texel(0).x;
 
-  vtkSmartPointer<vtkPolyData> truth = TruthGeometry(textures, options, Window());
+  vtkSmartPointer<vtkPolyData> truth =
+    TruthGeometry(textures, options.TruthColumns, options.TruthLayers, Window());
   vtkNew<vtkPolyDataMapper> truthMapper;
   truthMapper->SetInputData(truth);
   truthMapper->SetColorModeToDirectScalars();
@@ -519,12 +515,12 @@ std::string Study(const Options& options)
     const bool part = (seen.U1 - seen.U0) * (seen.V1 - seen.V0) < 0.5;
     if (part)
     {
-      ReliefPathStudy::Options fine = options;
-      fine.TruthColumns = options.TruthColumnsUpClose;
-      truthMapper->SetInputData(TruthGeometry(textures, fine, seen));
+      truthMapper->SetInputData(
+        TruthGeometry(textures, options.TruthColumnsUpClose, options.TruthLayers, seen));
       partTruth << "; up close, over the part in view (u in [" << std::setprecision(2)
                 << seen.U0 << ", " << seen.U1 << "], v in [" << seen.V0 << ", " << seen.V1
-                << "]), from " << fine.TruthColumns << " columns along its longer side ("
+                << "]), from " << options.TruthColumnsUpClose
+                << " columns along its longer side ("
                 << truthMapper->GetInput()->GetNumberOfPolys() << " triangles)";
     }
     else

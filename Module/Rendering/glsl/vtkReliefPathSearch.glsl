@@ -284,11 +284,17 @@ int reliefPathListed(int list, int k)
   return int(reliefPathEntry(RELIEF_PATH_TEXEL(list + k / 4), k - 4 * (k / 4)));
 }
 
+// Element `texel`, from its start to its end.
+vec2 reliefPathRun(int texel)
+{
+  vec4 ends = RELIEF_PATH_TEXEL(texel);
+  return vec2(ends.z - ends.x, ends.w - ends.y);
+}
+
 // The length of element `texel`.
 float reliefPathSpan(int texel)
 {
-  vec4 ends = RELIEF_PATH_TEXEL(texel);
-  return length(vec2(ends.z - ends.x, ends.w - ends.y));
+  return length(reliefPathRun(texel));
 }
 
 // How far the outline of element `texel` and the next of its path strays from the first
@@ -299,10 +305,8 @@ float reliefPathSpan(int texel)
 // revolved profiles fill in, less far); none where the rays stop short of all that.
 float reliefPathStray(int texel, float past, float halfExtent)
 {
-  vec4 ends = RELIEF_PATH_TEXEL(texel);
-  vec4 nextEnds = RELIEF_PATH_TEXEL(texel + 2);
-  vec2 axis = normalize(vec2(ends.z - ends.x, ends.w - ends.y));
-  vec2 nextAxis = normalize(vec2(nextEnds.z - nextEnds.x, nextEnds.w - nextEnds.y));
+  vec2 axis = normalize(reliefPathRun(texel));
+  vec2 nextAxis = normalize(reliefPathRun(texel + 2));
   float sine = abs(axis.x * nextAxis.y - axis.y * nextAxis.x);
   float cosine = max(dot(axis, nextAxis), 1e-3f);
   float lead = halfExtent * sine / (1.0f + cosine);
