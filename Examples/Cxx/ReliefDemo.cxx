@@ -125,6 +125,10 @@ int main(int argc, char* argv[])
       [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeatures(w, 640, 480, 50.0); } },
     { "path_features_closeup", "the same close up and low: the slot's overhang, the bead",
       [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeaturesCloseUp(w, 640, 480); } },
+    { "path_features_on_relief",
+      "features cut into a relief base: a saw cut and a crack through the bricks of a height "
+      "map, a steel rod across them casting its shadow",
+      [](vtkRenderWindow* w) { ReliefPathScene::ShowPathFeaturesOnRelief(w, 640, 480, 50.0); } },
     { "engraved_cylinder",
       "a label engraved with a V-bit on a cylinder of 48 x 8 quads (the quadric frame)",
       [](vtkRenderWindow* w) { ReliefPathScene::ShowEngravedCylinder(w, 640, 480); } },

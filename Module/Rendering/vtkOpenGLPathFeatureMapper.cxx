@@ -4,6 +4,9 @@
 #include "vtkOpenGLPathFeatureTextures.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPathFeatureTextureFilter.h"
+#include "vtkReliefPathOnRelief.h"
+#include "vtkReliefPathSearch.h"
+#include "vtkReliefSearchMethod.h"
 #include "vtkRenderer.h"
 
 vtkStandardNewMacro(vtkOpenGLPathFeatureMapper);
@@ -51,26 +54,72 @@ double vtkOpenGLPathFeatureMapper::GetBaseDepth()
 
 bool vtkOpenGLPathFeatureMapper::UpdateReliefTexture(vtkRenderer* ren)
 {
-  return this->PathFeatures->Update(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
+  if (!this->PathFeatures->Update(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())))
+  {
+    return false;
+  }
+  // a height map, where one is given, is the base the features cut into; one that cannot
+  // be drawn (said why, once) leaves the base flat
+  const bool reliefBase =
+    this->GetNumberOfInputConnections(1) > 0 && this->Superclass::UpdateReliefTexture(ren);
+  if (reliefBase != this->DrawingReliefBase)
+  {
+    this->DrawingReliefBase = reliefBase;
+    this->ShaderOptionsTime.Modified();
+  }
+  return true;
+}
+
+void vtkOpenGLPathFeatureMapper::UpdateAcceleration(vtkRenderer* ren)
+{
+  if (this->DrawingReliefBase)
+  {
+    this->Superclass::UpdateAcceleration(ren);
+  }
 }
 
 void vtkOpenGLPathFeatureMapper::ActivateReliefTextures(bool activate)
 {
   this->PathFeatures->Activate(activate);
+  if (this->DrawingReliefBase)
+  {
+    this->Superclass::ActivateReliefTextures(activate);
+  }
 }
 
 void vtkOpenGLPathFeatureMapper::SetReliefTextureParameters(vtkShaderProgram* program)
 {
   this->PathFeatures->SetUniforms(program);
+  if (this->DrawingReliefBase)
+  {
+    // after the features': the field's texel size is the one its searches and footprint read
+    this->Superclass::SetReliefTextureParameters(program);
+  }
 }
 
 std::string vtkOpenGLPathFeatureMapper::GetSearchDefines()
 {
-  return vtkOpenGLPathFeatureTextures::GetSearchDefines();
+  std::string defines = vtkOpenGLPathFeatureTextures::GetSearchDefines();
+  if (this->DrawingReliefBase)
+  {
+    // the features' search on the field, which the search method searches, reaching its
+    // depth 1 below the base plane
+    defines += std::string("#define RELIEF_PATH_RELIEF_BASE\n"
+                           "#define RELIEF_PATH_BASE_SEARCH ") +
+      this->GetActiveSearch().Function +
+      "\n#undef RELIEF_SEARCH\n#define RELIEF_SEARCH reliefSearchPathFeaturesOnRelief\n"
+      "#undef RELIEF_DEEPEST\n"
+      "#define RELIEF_DEEPEST max(RELIEF_PATH_TEXEL(0).y, RELIEF_PATH_TEXEL(0).x + 1.0)\n";
+  }
+  return defines;
 }
 
 std::string vtkOpenGLPathFeatureMapper::GetSearchSource()
 {
+  if (this->DrawingReliefBase)
+  {
+    return this->Superclass::GetSearchSource() + vtkReliefPathSearch + vtkReliefPathOnRelief;
+  }
   return vtkOpenGLPathFeatureTextures::GetSearchSource();
 }
 
@@ -81,7 +130,8 @@ std::string vtkOpenGLPathFeatureMapper::GetHitColourCode()
 
 vtkIdType vtkOpenGLPathFeatureMapper::GetTextureBytes()
 {
-  return this->PathFeatures->GetTextureBytes();
+  return this->PathFeatures->GetTextureBytes() +
+    (this->DrawingReliefBase ? this->Superclass::GetTextureBytes() : 0);
 }
 
 void vtkOpenGLPathFeatureMapper::ReleaseGraphicsResources(vtkWindow* window)
@@ -93,6 +143,7 @@ void vtkOpenGLPathFeatureMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkOpenGLPathFeatureMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "DrawingReliefBase: " << this->DrawingReliefBase << "\n";
   os << indent << "PathFeatures:\n";
   this->PathFeatures->PrintSelf(os, indent.GetNextIndent());
 }

@@ -21,7 +21,14 @@
  * vtkPathFeatureTextureFilter for the data, and GetPathFeatureTextureFilter() for its
  * settings and materials. The base surface lies GetBaseDepth() x DepthScale below the
  * polygons, so that what protrudes reaches them. Without paths the plain surface is drawn.
- * The search method of the superclass does not apply: the path search is the only one.
+ *
+ * The base may itself be a relief: give a height map (SetHeightMapConnection() or
+ * SetHeightMapData(), read as vtkOpenGLReliefMapper reads it) and the features cut into
+ * it (vtkReliefPathOnRelief.glsl, beyond the paper): the field hangs from the base plane,
+ * its depth 1 a DepthScale below it, and is searched by the superclass's SearchMethod;
+ * what the features add stands on the plane, what they cut is cut from the field too;
+ * one true depth for both. Without a height map the base is flat and SearchMethod does
+ * not apply: the path search is the only one.
  * On curved meshes vtkOpenGLQuadricPathFeatureMapper lets the features carve the outline.
  */
 #ifndef vtkOpenGLPathFeatureMapper_h
@@ -56,8 +63,11 @@ public:
   /// The depth of the base surface below the polygons, in units of DepthScale, as drawn.
   double GetBaseDepth();
 
-  /// GPU memory of the grid and data textures, as last uploaded.
+  /// GPU memory of the grid and data textures, as last uploaded, and of the relief base's.
   vtkIdType GetTextureBytes() override;
+
+  /// Whether the last render drew the features on a relief base (a usable height map).
+  vtkGetMacro(DrawingReliefBase, bool);
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -66,7 +76,7 @@ protected:
   ~vtkOpenGLPathFeatureMapper() override;
 
   bool UpdateReliefTexture(vtkRenderer* ren) override;
-  void UpdateAcceleration(vtkRenderer*) override {}
+  void UpdateAcceleration(vtkRenderer* ren) override;
   void ActivateReliefTextures(bool activate) override;
   void SetReliefTextureParameters(vtkShaderProgram* program) override;
   std::string GetSearchDefines() override;
@@ -74,6 +84,7 @@ protected:
   std::string GetHitColourCode() override;
 
   vtkNew<vtkOpenGLPathFeatureTextures> PathFeatures;
+  bool DrawingReliefBase = false; // a height map given and usable, as of the last render
 
 private:
   vtkOpenGLPathFeatureMapper(const vtkOpenGLPathFeatureMapper&) = delete;

@@ -51,6 +51,13 @@ double vtkOpenGLQuadricPathFeatureMapper::GetBaseDepth()
 
 bool vtkOpenGLQuadricPathFeatureMapper::UpdateReliefTexture(vtkRenderer* ren)
 {
+  if (this->GetNumberOfInputConnections(1) > 0 && !this->WarnedReliefBase)
+  {
+    this->WarnedReliefBase = true;
+    vtkWarningMacro("The quadric frame's path features take no relief base (its rays are "
+                    "curved): the height map is left out and the base is flat. Draw features "
+                    "on a height map with vtkOpenGLPathFeatureMapper.");
+  }
   return this->PathFeatures->Update(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
 }
 

@@ -66,6 +66,7 @@ protected:
   std::string GetHitColourCode() override;
 
   vtkNew<vtkOpenGLPathFeatureTextures> PathFeatures;
+  bool WarnedReliefBase = false; // a height map was given, which this frame leaves out
 
 private:
   vtkOpenGLQuadricPathFeatureMapper(const vtkOpenGLQuadricPathFeatureMapper&) = delete;

@@ -10,7 +10,8 @@
 //
 // Every method of vtkReliefSearchMethod is compared: the mirror's search of the method's
 // GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it; and
-// vtkOpenGLPathFeatureMapper's path walk, on its filter's textures. No baseline image:
+// vtkOpenGLPathFeatureMapper's path walk, on its filter's textures, on a flat base and on
+// a relief base. No baseline image:
 // the depth buffer is checked against the mirror, not against a picture.
 #include "ReliefMirrorMaps.h"
 #include "ReliefPathFixtures.h"
@@ -408,6 +409,41 @@ bool ComparePathFeatures(vtkRenderWindow* window, vtkRenderer* renderer, const V
   return Report("the path-feature showcase", "PathFeatures", result);
 }
 
+// The same paths cut into the rivet plate (vtkReliefPathOnRelief.glsl), the field searched
+// by ExactDDA, as the mirror's is.
+bool ComparePathFeaturesOnRelief(vtkRenderWindow* window, vtkRenderer* renderer,
+  const View& view, std::vector<float>& zbuffer, Maps& maps)
+{
+  constexpr double Tiles = 2.0;
+  vtkSmartPointer<vtkOpenGLPathFeatureMapper> mapper =
+    ReliefPathScene::ShowcaseMapper(ReliefScene::Square(Tiles), 0.03);
+  mapper->SetSelfShadowing(false);
+  mapper->SetHeightMapData(Scenes[0].HeightMap());
+  mapper->SetSearchMethodToExactDDA();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->RemoveAllViewProps();
+  renderer->AddActor(actor);
+  window->Render();
+  window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
+  renderer->RemoveAllViewProps();
+  if (!mapper->GetDrawingReliefBase())
+  {
+    std::cerr << "ERROR: the path-feature mapper drew no relief base for its height map\n";
+    return false;
+  }
+  const mirror::PathTextures textures =
+    ReliefPathFixtures::Textures(mapper->GetPathFeatureTextureFilter());
+  mirror::CurrentPaths = &textures;
+  PrepareMaps("ExactDDA", mapper, maps);
+  std::cout << "path features on the rivet plate:\n";
+  const Comparison result = Compare(Tiles, "PathsOnRelief",
+    &mirror::reliefSearchPathFeaturesOnRelief,
+    glm::vec2(float(maps.Field.Width), float(maps.Field.Height)), mapper, view,
+    SquareBasis(view, mapper->GetReliefSurface()), zbuffer);
+  return Report("the path-feature showcase on the rivet plate", "PathsOnRelief", result);
+}
+
 int TestReliefGpuMatchesCpu(int, char*[])
 {
   vtkNew<vtkRenderWindow> window;
@@ -472,5 +508,6 @@ int TestReliefGpuMatchesCpu(int, char*[])
     }
   }
   failures += ComparePathFeatures(window, renderer, view, zbuffer) ? 0 : 1;
+  failures += ComparePathFeaturesOnRelief(window, renderer, view, zbuffer, maps) ? 0 : 1;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

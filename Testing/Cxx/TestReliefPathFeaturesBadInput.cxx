@@ -8,8 +8,10 @@
 
 #include "vtkActor.h"
 #include "vtkCommand.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPathFeatureMapper.h"
+#include "vtkOpenGLQuadricPathFeatureMapper.h"
 #include "vtkPathFeatureTextureFilter.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -210,6 +212,40 @@ int TestReliefPathFeaturesBadInput(int, char*[])
     Check(census.Errors == 0 && census.Warnings == 0, "a path beyond the tile: silent");
     Check(census.Cut > 500, "a path beyond the tile: drawn where it tiles to");
     CheckSane(census, "a path beyond the tile");
+  }
+  // a height map that holds nothing, given as the relief base: said once by the relief
+  // texture filter, the features drawn on the flat base
+  {
+    auto mapper = MapperOf({ groove });
+    vtkNew<vtkImageData> empty;
+    mapper->SetHeightMapData(empty);
+    const Census census = Render(window, mapper);
+    Check(census.Errors + census.Warnings == 1 && census.Says("input image is empty"),
+      "an empty height map: one message");
+    Check(!mapper->GetDrawingReliefBase(), "an empty height map: no relief base");
+    Check(census.Cut > 500, "an empty height map: the groove cut into the flat base");
+    CheckSane(census, "an empty height map");
+  }
+  // a height map given to the quadric frame's mapper, which takes no relief base: said
+  // once, the features drawn on the flat base
+  {
+    vtkNew<vtkOpenGLQuadricPathFeatureMapper> quadric;
+    auto recorder = vtkSmartPointer<ReliefEventRecorder>::New();
+    quadric->AddObserver(vtkCommand::WarningEvent, recorder);
+    quadric->AddObserver(vtkCommand::ErrorEvent, recorder);
+    quadric->SetInputData(ReliefScene::Square(1.0));
+    quadric->SetPathsData(PathsData({ groove }));
+    quadric->SetHeightMapData(ReliefScene::ReadImage("waves_height.png"));
+    window->GetRenderers()->RemoveAllItems();
+    auto renderer = ReliefScene::LitRenderer(window, 160, 160);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(quadric);
+    renderer->AddActor(actor);
+    ReliefScene::ViewSquare(renderer, 0.0);
+    window->Render();
+    window->Render();
+    Check(recorder->Messages.size() == 1 && recorder->AnyMessageContains("no relief base"),
+      "a height map on the quadric frame: one warning");
   }
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -9,6 +9,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkPlaneSource.h"
+#include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -23,6 +24,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkTexture.h"
 
 #include <cmath>
 #include <utility>
@@ -236,6 +238,38 @@ vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeaturesCloseUp(
   camera->SetViewUp(0.0, 0.0, 1.0);
   camera->SetViewAngle(40.0);
   renderer->ResetCameraClippingRange();
+  return mapper;
+}
+
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeaturesOnRelief(
+  vtkRenderWindow* window, int width, int height, double angle)
+{
+  auto renderer = ReliefScene::LitRenderer(window, width, height);
+  auto mapper = vtkSmartPointer<vtkOpenGLPathFeatureMapper>::New();
+  mapper->SetInputData(ReliefScene::Square(1.0));
+  mapper->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
+  mapper->SetProfilesData(Profiles());
+  vtkPathFeatureTextureFilter* filter = mapper->GetPathFeatureTextureFilter();
+  const int mortar = AddMaterials(filter);
+  const int crack = mortar + 1;
+  const int steel = mortar + 2;
+  PathBuilder paths;
+  // a saw cut 1 deep: through the bricks' faces, hardly into the mortar, 0.95 deep
+  paths.Add({ { 0.03, 0.12 }, { 0.97, 0.58 } }, 0.018, VEE, -1);
+  paths.Add({ { 0.08, 0.9 }, { 0.3, 0.74 }, { 0.42, 0.77 }, { 0.61, 0.6 } }, 0.014, VEE, crack,
+    1, 1.0, 0.0);
+  // a steel rod across the wall, standing on the base plane above the mortar
+  paths.Add({ { 0.02, 0.33 }, { 0.98, 0.33 } }, 0.02, BEAD, steel);
+  mapper->SetPathsData(paths.Make());
+  mapper->SetDepthScale(0.03);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->SetTexture(ReliefScene::ReadTexture("bricks_color.png"));
+  actor->GetProperty()->SetSpecular(0.1);
+  actor->GetProperty()->SetSpecularPower(10.0);
+  actor->GetProperty()->SetAmbient(0.2);
+  renderer->AddActor(actor);
+  ReliefScene::ViewSquare(renderer, angle);
   return mapper;
 }
 

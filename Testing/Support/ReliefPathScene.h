@@ -49,6 +49,16 @@ vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeaturesCloseUp(
   vtkRenderWindow* window, int width, int height);
 
 /**
+ * Path features cut into a relief base (vtkReliefPathOnRelief.glsl): the brick wall of
+ * bricks_height.png, coloured by bricks_color.png, which a saw cut crosses diagonally
+ * (through the bricks, over the deeper mortar), a crack narrowing to nothing crosses, and
+ * a steel rod (a protruding bead) spans, casting its shadow on the bricks; the square
+ * seen `angle` degrees from its normal.
+ */
+vtkSmartPointer<vtkOpenGLPathFeatureMapper> ShowPathFeaturesOnRelief(
+  vtkRenderWindow* window, int width, int height, double angle);
+
+/**
  * A cylinder of radius 0.4 and height 1 whose texture coordinates are isotropic in the
  * world (u once around, v up to its height over its circumference), 48 x 8 quads.
  */

@@ -9,6 +9,12 @@
 #include "vtkReliefConeSearch.glsl"
 #include "vtkReliefAutomaticSearch.glsl"
 #include "vtkReliefPathSearch.glsl"
+#ifndef RELIEF_CURVED_FRAME
+// path features on a relief base (straight rays only), the field searched exactly
+#define RELIEF_PATH_BASE_SEARCH reliefSearchExactDDA
+#include "vtkReliefPathOnRelief.glsl"
+#undef RELIEF_PATH_BASE_SEARCH
+#endif
 #include "vtkReliefTangentBasis.glsl"
 #ifdef RELIEF_MIRROR_FLAT_FRAME
 #include "vtkReliefFlatFrame.glsl"

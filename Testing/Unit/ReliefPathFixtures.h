@@ -163,8 +163,13 @@ public:
         held = true;
       }
     }
-    return held ? !cut : point.z >= this->Base;
+    const double ground = this->Field ? this->Field->Sample(glm::vec2(point.x, point.y)) : 0.0;
+    return held ? !cut : point.z >= this->Base + ground;
   }
+
+  /// A relief base (vtkReliefPathOnRelief.glsl): where no feature holds a point, matter is
+  /// the field hung from the base plane, not all below it.
+  void SetReliefBase(const ReliefCpuMirror::DepthField* field) { this->Field = field; }
 
   /// The first t in [0, tEnd] where the ray is in matter: steps of `step`, then bisection.
   double Hit(glm::dvec3 origin, glm::dvec3 direction, double tEnd, double step) const
@@ -267,6 +272,7 @@ private:
 
   Scene Features;
   double Base;
+  const ReliefCpuMirror::DepthField* Field = nullptr;
 };
 }
 

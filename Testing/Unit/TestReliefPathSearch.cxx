@@ -632,3 +632,194 @@ TEST(ReliefPathSearch, RegionSamplingRefusesWhereItsRaysReachAnotherFeature)
     }
   }
 }
+
+// Path features cut into a relief base (vtkReliefPathOnRelief.glsl): the field hangs from
+// the base plane and fills what no feature holds; a groove cuts it where it is shallower
+// than the groove, and the field shows where it is deeper.
+namespace
+{
+// The depth a vertical ray at uv meets on the relief base.
+ReliefHit OnReliefAt(vec2 uv)
+{
+  return reliefSearchPathFeaturesOnRelief(Ray(uv, vec3(0.0f, 0.0f, 1.0f)), 0, 0);
+}
+
+// Ground at depth 0 for u < 0.5 and `low` beyond, the step a bilinear ramp one texel wide.
+DepthField Step(float low)
+{
+  return DepthField::FromFunction(
+    64, 64, [low](float u, float) { return u < 0.5f ? 0.0f : low; });
+}
+}
+
+TEST(ReliefPathSearch, GroovesCutIntoAReliefBase)
+{
+  Scene scene;
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1 });
+  Built built(scene);
+  const DepthField field = Step(0.6f);
+  CurrentField = &field;
+  // the groove's floor, 1 deep, on the high ground and on the low
+  EXPECT_NEAR(OnReliefAt(vec2(0.25f, 0.5f)).position.z, 1.0f, 1e-5f);
+  EXPECT_NEAR(OnReliefAt(vec2(0.75f, 0.5f)).position.z, 1.0f, 1e-5f);
+  // beside it: the field, lit as the field, in the actor's colour
+  EXPECT_NEAR(OnReliefAt(vec2(0.25f, 0.7f)).position.z, 0.0f, 1e-6f);
+  const ReliefHit low = OnReliefAt(vec2(0.75f, 0.7f));
+  EXPECT_TRUE(low.hit);
+  EXPECT_NEAR(low.position.z, 0.6f, 1e-5f);
+  EXPECT_NEAR(reliefPathHitNormal.z, -1.0f, 1e-6f);
+  EXPECT_EQ(reliefPathHitMaterial, -1.0f);
+  // near the groove's edge on the low ground the groove is shallower than the field: the
+  // field (the half circle's facet there is a third deep)
+  EXPECT_NEAR(OnReliefAt(vec2(0.75f, 0.5f + 0.0475f)).position.z, 0.6f, 1e-5f);
+  // on the step's ramp the normal is the field's: its gradient 0.6 x 64 along u
+  const ReliefHit ramp = OnReliefAt(vec2(0.5f, 0.7f));
+  EXPECT_NEAR(ramp.position.z, 0.3f, 1e-5f);
+  EXPECT_NEAR(reliefPathHitNormal.x / reliefPathHitNormal.z, -0.6f * 64.0f, 1e-2f);
+  // a slanting ray from the groove's middle on the high ground meets its wall (the half
+  // circle x^2 + y^2 = 1 where x = 2t, y = t: 0.45 deep, less on the facets' chords), not
+  // the field
+  const ReliefHit wall =
+    reliefSearchPathFeaturesOnRelief(Ray(vec2(0.25f, 0.5f), vec3(0.0f, 0.1f, 1.0f)), 0, 0);
+  EXPECT_NEAR(wall.position.z, 0.43f, 0.03f);
+  EXPECT_LT(reliefPathHitNormal.y, 0.0f); // facing back toward the groove's middle
+}
+
+TEST(ReliefPathSearch, OnAReliefBaseAgreesWithTheMarchedReference)
+{
+  Scene scene;
+  scene.Profiles = { VGroove, Ridge, Dovetail, DefaultGroove() };
+  scene.Paths.push_back({ { { 0.05, 0.25 }, { 0.95, 0.3 } }, 0.08, 0 });
+  scene.Paths.push_back({ { { 0.2, 0.05 }, { 0.25, 0.6 }, { 0.7, 0.8 } }, 0.06, 1 });
+  scene.Paths.push_back({ { { 0.5, 0.1 }, { 0.55, 0.9 } }, 0.1, 2, 1 });
+  scene.Paths.push_back({ { { 0.9, 0.6 }, { 1.15, 0.95 } }, 0.05, 3 }); // across the tile's edge
+  // rolling ground from the base plane down to 0.9, shallower and deeper than the cuts
+  const DepthField field = DepthField::FromFunction(48, 40, [](float u, float v) {
+    return 0.45f + 0.45f * std::sin(6.2831853f * 3.0f * u) * std::cos(6.2831853f * 2.0f * v);
+  });
+  CurrentField = &field;
+  Built built(scene);
+  Reference reference(scene, built.Base);
+  reference.SetReliefBase(&field);
+  std::mt19937 random(8);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  int rays = 0;
+  int agreeing = 0;
+  int slivers = 0;
+  int onField = 0;
+  for (int k = 0; k < 800; ++k)
+  {
+    const float angle = 6.2831853f * unit(random);
+    const float run = 0.3f * unit(random);
+    const vec2 uv(unit(random), unit(random));
+    const ReliefRay ray = Ray(uv, vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
+    const ReliefHit hit = reliefSearchPathFeaturesOnRelief(ray, 0, 0);
+    const glm::dvec3 origin(ray.origin);
+    const glm::dvec3 direction(ray.direction);
+    const double expected =
+      reference.Hit(origin, direction, std::max(built.Deepest, built.Base + 1.0), 5e-4);
+    ASSERT_GE(expected, 0.0);
+    ASSERT_TRUE(hit.hit);
+    rays += 1;
+    onField += reliefPathHitMaterial < 0.0f && hit.position.z > built.Base + 1e-4 ? 1 : 0;
+    if (std::abs(hit.t - expected) < 1e-4)
+    {
+      agreeing += 1;
+    }
+    else if (hit.t < expected && reference.Solid(origin + (hit.t + 1e-5) * direction))
+    {
+      slivers += 1;
+    }
+    else
+    {
+      ADD_FAILURE() << "ray from " << ray.origin.x << " " << ray.origin.y << " along "
+                    << ray.direction.x << " " << ray.direction.y << " hits at " << hit.t
+                    << ", the reference at " << expected;
+    }
+  }
+  EXPECT_GE(agreeing, rays * 99 / 100) << slivers << " slivers";
+  EXPECT_GT(onField, rays / 4); // the field is met, not only the features
+}
+
+// A brick's side shades the mortar beside it, except where a groove cut through the brick
+// lets the light along it.
+TEST(ReliefPathSearch, OnAReliefBaseShadowsPassThroughCuts)
+{
+  Scene scene;
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1 });
+  Built built(scene);
+  const DepthField field = DepthField::FromFunction(
+    64, 64, [](float u, float) { return u > 0.3f && u < 0.5f ? 0.0f : 0.8f; });
+  CurrentField = &field;
+  const vec3 towardBrick(-0.2f, 0.0f, -1.0f);
+  const vec3 awayFromBrick(0.2f, 0.0f, -1.0f);
+  const ReliefHit mortar = OnReliefAt(vec2(0.55f, 0.7f));
+  EXPECT_NEAR(mortar.position.z, 0.8f, 1e-5f);
+  EXPECT_EQ(reliefPathOnReliefLightVisibility(mortar.clear, towardBrick, 0, 0), 0.0f);
+  EXPECT_EQ(reliefPathOnReliefLightVisibility(mortar.clear, awayFromBrick, 0, 0), 1.0f);
+  const ReliefHit groove = OnReliefAt(vec2(0.55f, 0.5f));
+  EXPECT_NEAR(groove.position.z, 1.0f, 1e-5f);
+  EXPECT_EQ(reliefPathOnReliefLightVisibility(groove.clear, towardBrick, 0, 0), 1.0f);
+}
+// Where the features add something, the base plane lies below the polygons; a ray's
+// crossing of it rounds to either side, and the side above is no addition: under a light
+// almost overhead, nothing on a smooth field shadows itself.
+TEST(ReliefPathSearch, OnAReliefBaseTheLitFieldCastsNoShadowOnItself)
+{
+  Scene scene;
+  scene.Profiles = { Ridge };
+  scene.Paths.push_back({ { { 0.02, 0.33 }, { 0.98, 0.33 } }, 0.02, 0 });
+  Built built(scene);
+  ASSERT_NEAR(built.Base, 0.4, 1e-6);
+  const DepthField field = DepthField::FromFunction(256, 256, [](float u, float v) {
+    return 0.5f + 0.25f * (std::sin(6.2831853f * 2.0f * u) + std::sin(6.2831853f * 3.0f * v));
+  });
+  CurrentField = &field;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  // the waves slope up to 0.25 x 2 pi x 3 = 4.7 a unit of v; the light rises 33 a unit of
+  // (u, v), its rays reach 0.03 across from depth 1: the ridge at v = 0.33 is out of reach
+  const vec3 light(-1.0f, 1.0f, -33.0f);
+  int shadowed = 0;
+  for (int k = 0; k < 2000; ++k)
+  {
+    const vec2 uv(unit(random), 0.5f + 0.45f * unit(random));
+    const ReliefHit hit =
+      reliefSearchPathFeaturesOnRelief(Ray(uv, vec3(0.0f, 0.8f, 1.0f)), 0, 0);
+    ASSERT_TRUE(hit.hit);
+    shadowed += reliefPathOnReliefLightVisibility(hit.clear, light, 0, 0) == 0.0f ? 1 : 0;
+  }
+  EXPECT_EQ(shadowed, 0);
+}
+
+// Far from every feature the footprint's rays search the field alone: as the features'
+// search on the relief base finds it there.
+TEST(ReliefPathSearch, OnAReliefBaseTheFieldAloneIsWhatTheFeaturesLeave)
+{
+  Scene scene;
+  scene.Profiles = { Ridge };
+  scene.Paths.push_back({ { { 0.1, 0.2 }, { 0.9, 0.2 } }, 0.04, 0 });
+  Built built(scene);
+  ASSERT_GT(built.Base, 0.0);
+  const DepthField field = DepthField::FromFunction(48, 40, [](float u, float v) {
+    return 0.45f + 0.45f * std::sin(6.2831853f * 3.0f * u) * std::cos(6.2831853f * 2.0f * v);
+  });
+  CurrentField = &field;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int k = 0; k < 300; ++k)
+  {
+    const float angle = 6.2831853f * unit(random);
+    const float run = 0.2f * unit(random);
+    const ReliefRay ray = Ray(vec2(unit(random), 0.45f + 0.35f * unit(random)),
+      vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
+    const ReliefHit both = reliefSearchPathFeaturesOnRelief(ray, 0, 0);
+    const vec3 normal = reliefPathHitNormal;
+    const ReliefHit alone = reliefPathBaseAlone(ray, 0, 0);
+    ASSERT_TRUE(both.hit && alone.hit);
+    EXPECT_NEAR(alone.t, both.t, 1e-5f);
+    EXPECT_NEAR(glm::length(reliefPathHitNormal - normal), 0.0f, 1e-3f * glm::length(normal));
+    EXPECT_EQ(reliefPathHitMaterial, -1.0f);
+    EXPECT_LT(alone.clear.z, alone.position.z);
+  }
+}

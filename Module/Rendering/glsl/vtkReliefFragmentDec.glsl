@@ -43,7 +43,16 @@ vec2 reliefGradY;
 // llvmpipe reads an 8-bit colour texture at about twice the coordinates where an
 // explicit level (textureLod) differs between the fragments it shades together: a
 // two-pixel column of wrong colour wherever the level crosses a whole number.
+#ifdef RELIEF_PATH_FEATURES
+// The actor's textures colour what the features' own materials do not: VTK multiplies the
+// lit colour by the texture's, which reads white for the materials' share of the footprint
+// (reliefPathMaterialShare).
+float reliefPathMaterialShare();
+#define reliefTextureAtRay(sampler, uv) mix( \
+  textureGrad(sampler, uv, reliefGradX, reliefGradY), vec4(1.0), reliefPathMaterialShare())
+#else
 #define reliefTextureAtRay(sampler, uv) textureGrad(sampler, uv, reliefGradX, reliefGradY)
+#endif
 
 // Depths are read at full resolution, whatever the footprint: the searches intersect and
 // the shading lights the field itself, never a mipmap's average of it, which lowers steps
@@ -65,22 +74,6 @@ vec4 reliefCellDepths(vec2 cell)
     texelFetch(reliefDepthTexture, ivec2(high.x, low.y), 0).r,
     texelFetch(reliefDepthTexture, ivec2(low.x, high.y), 0).r,
     texelFetch(reliefDepthTexture, high, 0).r);
-}
-#endif
-#ifndef RELIEF_INPUT_NORMALS
-// The depth gradient (change of depth per unit of u and v) at `uv`: that of the bilinear
-// patch the searches intersect (the field between texel centres, Baboud and Decoret
-// 2006, s3.1), read at full resolution from the cell under it, so that the surface lit is
-// the surface searched.
-vec2 reliefFieldGradient(vec2 uv)
-{
-  vec2 at = uv * reliefTextureSize - 0.5;
-  vec2 cell = floor(at);
-  vec2 within = at - cell;
-  vec4 corners = RELIEF_CELL_DEPTHS(cell);
-  return vec2(mix(corners.y - corners.x, corners.w - corners.z, within.y),
-           mix(corners.z - corners.x, corners.w - corners.y, within.x)) *
-    reliefTextureSize;
 }
 #endif
 
@@ -121,7 +114,10 @@ float reliefShadow(vec3 toLightVC)
   {
     return 1.0;
   }
-#ifdef RELIEF_PATH_FEATURES
+#if defined(RELIEF_PATH_RELIEF_BASE)
+  return reliefPathOnReliefLightVisibility(
+    reliefViewHit.clear, reliefToTexture(toLightVC), reliefLinearSteps, reliefBinarySteps);
+#elif defined(RELIEF_PATH_FEATURES)
   return reliefPathLightVisibility(reliefViewHit.clear, reliefToTexture(toLightVC));
 #else
   return reliefLightVisibility(
@@ -175,6 +171,17 @@ void reliefAddFootprintNormal(vec3 normal, float weight)
 }
 
 #ifdef RELIEF_PATH_FEATURES
+// The weight of the footprint's normals whose searches met a material of their own.
+float reliefPathMaterialShare()
+{
+  float share = 0.0;
+  for (int k = 0; k < reliefFootprintCount; ++k)
+  {
+    share += reliefFootprintMaterials[k] >= 0.0 ? reliefFootprintWeights[k] : 0.0;
+  }
+  return share;
+}
+
 // The colours VTK's lighting reads, as the footprint's materials weighted like its normals:
 // the actor's where a search met no material of its own; a material's colour is ambient
 // and diffuse, as scalars colour both.
@@ -266,10 +273,37 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
   regions.offsets = vec4(0.0);
   regions.weights = vec4(0.0);
   regions.right = vec2(0.0);
+#ifdef RELIEF_PATH_RELIEF_BASE
+  // on a relief base (vtkReliefPathOnRelief.glsl) the regions' plain base is not plain:
+  // the footprint's rays wherever a feature is near, and wherever the pixel holds more
+  // than half a texel of the field, whose detail then aliases as the relief mapper's would;
+  // those of the second kind search the field alone, in a loop of their own (on llvmpipe
+  // a loop no fragment of the eight run together needs costs one pass, and most pixels
+  // are far from every feature)
+  float side = min(length(fragment.tcoordAlongX * reliefTextureSize),
+    length(fragment.tcoordAlongY * reliefTextureSize));
+  bool fieldAlone = !near && reliefDepthScale > 0.0 && side > 0.5;
+  for (int k = 0; k < 4 && fieldAlone; ++k)
+  {
+    ReliefFragment quarter = fragment;
+    quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
+      reliefRotatedGrid[k].y * fragment.tcoordAlongY;
+    ReliefHit hit = reliefPathBaseAlone(
+      reliefScreenViewRay(frame, quarter), reliefLinearSteps, reliefBinarySteps);
+    samples += hit.samples;
+    reliefAddFootprintNormal(
+      reliefFieldNormal(hit.position.xy - round(hit.position.xy - uv), slope), 0.25);
+  }
+  if (fieldAlone)
+  {
+    return reliefFootprintMean(centre);
+  }
+#else
   if (near && nearest.second > reach)
   {
     regions = reliefPathRegions(ray, nearest, fragment.tcoordAlongX, fragment.tcoordAlongY);
   }
+#endif
   if (!near || regions.count == 1)
   {
     reliefAddFootprintNormal(centre, 1.0);
@@ -291,7 +325,11 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
         reliefRotatedGrid[k].y * fragment.tcoordAlongY;
       walked = reliefScreenViewRay(frame, quarter);
     }
+#ifdef RELIEF_PATH_RELIEF_BASE
+    ReliefHit hit = RELIEF_SEARCH(walked, reliefLinearSteps, reliefBinarySteps);
+#else
     ReliefHit hit = reliefPathElementWalk(walked, regional ? nearest.element : 0, nearest.near);
+#endif
     samples += hit.samples;
     if (regional || !reliefFrameRayLeft(frame, walked, hit))
     {

@@ -68,6 +68,21 @@ float reliefCellIntersection(ReliefGridRay grid, vec2 cell, vec4 depths, float t
   return endGap <= 0.0f ? tOut : -1.0f;
 }
 
+// The depth gradient (change of depth per unit of u and v) at `uv`: that of the bilinear
+// patch the searches intersect (the field between texel centres, Baboud and Decoret
+// 2006, s3.1), read at full resolution from the cell under it, so that the surface lit is
+// the surface searched.
+vec2 reliefFieldGradient(vec2 uv)
+{
+  vec2 size = RELIEF_DEPTH_SIZE;
+  vec2 at = vec2(uv.x * size.x - 0.5f, uv.y * size.y - 0.5f);
+  vec2 cell = floor(at);
+  vec2 within = at - cell;
+  vec4 corners = RELIEF_CELL_DEPTHS(cell);
+  return vec2(mix(corners.y - corners.x, corners.w - corners.z, within.y) * size.x,
+    mix(corners.z - corners.x, corners.w - corners.y, within.x) * size.y);
+}
+
 // A parameter just before the first intersection t, hence above the field: the point the
 // self-shadow ray aims at (at most 1e-3 in depth and 1/20 of a cell back).
 float reliefClearBefore(ReliefGridRay grid, float t)
