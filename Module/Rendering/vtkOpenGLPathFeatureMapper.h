@@ -23,12 +23,14 @@
  * polygons, so that what protrudes reaches them. Without paths the plain surface is drawn.
  *
  * The base may itself be a relief: give a height map (SetHeightMapConnection() or
- * SetHeightMapData(), read as vtkOpenGLReliefMapper reads it) and the features cut into
- * it (vtkReliefPathOnRelief.glsl, beyond the paper): the field hangs from the base plane,
+ * SetHeightMapData(), read as vtkOpenGLReliefMapper reads it, but lit by its gradient: a
+ * normal map given with it is not read) and the features cut into it
+ * (vtkReliefPathOnRelief.glsl, beyond the paper): the field hangs from the base plane,
  * its depth 1 a DepthScale below it, and is searched by the superclass's SearchMethod;
  * what the features add stands on the plane, what they cut is cut from the field too;
- * one true depth for both. Without a height map the base is flat and SearchMethod does
- * not apply: the path search is the only one.
+ * one true depth for both. The actor's texture colours what has no material of its own.
+ * Without a height map the base is flat and SearchMethod does not apply: the path search
+ * is the only one.
  * On curved meshes vtkOpenGLQuadricPathFeatureMapper lets the features carve the outline.
  */
 #ifndef vtkOpenGLPathFeatureMapper_h

@@ -781,7 +781,8 @@ void vtkOpenGLReliefMapper::ReplaceShaderValues(
   // hit jumps (relief edges, silhouettes) and pick far too coarse a level there: read
   // them at the level of the entry coordinates.
   const int textureReads =
-    vtkReliefShaderRewrites::ReadTexturesThrough(fragmentSource, "reliefTextureAtRay");
+    vtkReliefShaderRewrites::ReadTexturesThrough(
+      fragmentSource, "reliefTextureAtRay", "reliefColourAtRay");
   if (textureReads == 0 && actor->GetTexture() && !this->WarnedTextureReads)
   {
     this->WarnedTextureReads = true;

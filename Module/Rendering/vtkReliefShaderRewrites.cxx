@@ -130,12 +130,15 @@ int vtkReliefShaderRewrites::LightThrough(
   return lights;
 }
 
-int vtkReliefShaderRewrites::ReadTexturesThrough(std::string& fragment, const char* read)
+int vtkReliefShaderRewrites::ReadTexturesThrough(
+  std::string& fragment, const char* read, const char* colourRead)
 {
   const std::string coordinates = GetTextureCoordinates();
   return RewriteEach(fragment, "texture(", ", " + coordinates + ")", IsWordCharacter,
     [&](const std::string& sampler) {
-      return std::string(read) + "(" + sampler + ", " + coordinates + ")";
+      const bool colour = sampler != "normalTex" && sampler != "materialTex" &&
+        sampler != "anisotropyTex" && sampler != "emissiveTex";
+      return std::string(colour ? colourRead : read) + "(" + sampler + ", " + coordinates + ")";
     });
 }
 

@@ -76,9 +76,11 @@ public:
 
   /**
    * VTK's implicit-derivative reads of textures at GetTextureCoordinates() made through
-   * `read`(sampler, coordinates). Returns the number of reads rewritten.
+   * `colourRead`(sampler, coordinates), those of the physically based property's textures
+   * that hold no colour it multiplies (normalTex, materialTex, anisotropyTex, emissiveTex)
+   * through `read`. Returns the number of reads rewritten.
    */
-  static int ReadTexturesThrough(std::string& fragment, const char* read);
+  static int ReadTexturesThrough(std::string& fragment, const char* read, const char* colourRead);
 
   /// `tag` of the vertex shader replaced by the declaration of VTK's model-to-view
   /// matrix where VTK did not declare it (it does for lit surfaces only).

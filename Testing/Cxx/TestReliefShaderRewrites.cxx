@@ -156,7 +156,7 @@ int TestReliefShaderRewrites(int, char*[])
     {
       Check(fragment.find(Rewrites::GetTextureCoordinates()) != std::string::npos,
         name + ": the fragment shader does not read " + Rewrites::GetTextureCoordinates());
-      Check(Rewrites::ReadTexturesThrough(fragment, "reliefTextureAtRay") >= 1,
+      Check(Rewrites::ReadTexturesThrough(fragment, "reliefTextureAtRay", "reliefColourAtRay") >= 1,
         name + ": no texture read at the texture coordinates found");
     }
     // the model-to-view matrix is declared once whatever VTK did
@@ -168,6 +168,16 @@ int TestReliefShaderRewrites(int, char*[])
       name + ": MCVCMatrix is not declared exactly once");
   }
 
+  // colour textures are read through the colour read, the physically based property's
+  // normal, material, anisotropy and emissive textures through the plain one
+  const std::string at = Rewrites::GetTextureCoordinates();
+  std::string reads = "a = texture(texture_0, " + at + "); b = texture(albedoTex, " + at +
+    "); c = texture(normalTex, " + at + "); d = texture(materialTex, " + at + ");";
+  Check(Rewrites::ReadTexturesThrough(reads, "plain", "colour") == 4 &&
+      reads == "a = colour(texture_0, " + at + "); b = colour(albedoTex, " + at +
+        "); c = plain(normalTex, " + at + "); d = plain(materialTex, " + at + ");",
+    "colour and other textures read apart: " + reads);
+
   // the rewrites say so where the code holds nothing they look for, and change nothing
   std::string other = "void main() { df = max(0.0, dot(n, l)); }";
   const std::string unchanged = other;
@@ -175,7 +185,7 @@ int TestReliefShaderRewrites(int, char*[])
       !Rewrites::InsertBefore(other, Rewrites::FragmentStart, "x") &&
       !Rewrites::Replace(other, Rewrites::FragmentDepth, "x") &&
       Rewrites::LightThrough(other, "reliefDiffuse", "reliefShadow") == 0 &&
-      Rewrites::ReadTexturesThrough(other, "reliefTextureAtRay") == 0 && other == unchanged,
+      Rewrites::ReadTexturesThrough(other, "reliefTextureAtRay", "reliefColourAtRay") == 0 && other == unchanged,
     "rewrites of code without their tags or statements");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -823,3 +823,45 @@ TEST(ReliefPathSearch, OnAReliefBaseTheFieldAloneIsWhatTheFeaturesLeave)
     EXPECT_LT(alone.clear.z, alone.position.z);
   }
 }
+
+// The field's search runs from where the walk stopped, on its own ray: the point at its
+// parameter s is the ray's at t + s span, lowered by the base; its screen run is the
+// ray's over that span, and an unknown run (which asks the Automatic search for an exact
+// search) stays unknown.
+TEST(ReliefPathSearch, OnAReliefBaseTheFieldsRayIsThePartBelowTheWalk)
+{
+  ReliefRay ray = Ray(vec2(0.3f, 0.6f), vec3(0.2f, -0.1f, 1.0f));
+  ray.screenRun = 40.0f;
+  const ReliefRay below = reliefPathBaseRay(ray, 0.5f, 0.4f, 1.1f);
+  for (float s : { 0.0f, 0.5f, 1.0f })
+  {
+    const vec3 expected = reliefRayAt(ray, 0.5f + s * 1.1f) - vec3(0.0f, 0.0f, 0.4f);
+    EXPECT_NEAR(glm::length(reliefRayAt(below, s) - expected), 0.0f, 1e-6f);
+  }
+  EXPECT_FLOAT_EQ(below.screenRun, 44.0f);
+  ray.screenRun = RELIEF_UNKNOWN_RUN;
+  EXPECT_EQ(reliefPathBaseRay(ray, 0.5f, 0.4f, 0.3f).screenRun, RELIEF_UNKNOWN_RUN);
+}
+
+// What the features add above the plane shades the field beside it.
+TEST(ReliefPathSearch, OnAReliefBaseARidgeShadowsTheField)
+{
+  Scene scene;
+  scene.Profiles = { Ridge };
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.04, 0 });
+  Built built(scene);
+  ASSERT_NEAR(built.Base, 0.4, 1e-6);
+  const DepthField field = DepthField::FromFunction(32, 32, [](float, float) { return 0.3f; });
+  CurrentField = &field;
+  // beside the ridge (0.02 wide each side of v = 0.5), on the field 0.7 deep
+  const ReliefHit ground = OnReliefAt(vec2(0.5f, 0.53f));
+  EXPECT_NEAR(ground.position.z, 0.7f, 1e-5f);
+  // toward the ridge, low: its top (0.4 above the plane) blocks the light
+  EXPECT_EQ(reliefPathOnReliefLightVisibility(ground.clear, vec3(0.0f, -0.1f, -1.0f), 0, 0),
+    0.0f);
+  // away from it, and toward it steeply enough to pass over it: lit
+  EXPECT_EQ(reliefPathOnReliefLightVisibility(ground.clear, vec3(0.0f, 0.1f, -1.0f), 0, 0),
+    1.0f);
+  EXPECT_EQ(reliefPathOnReliefLightVisibility(ground.clear, vec3(0.0f, -0.01f, -1.0f), 0, 0),
+    1.0f);
+}

@@ -43,15 +43,17 @@ vec2 reliefGradY;
 // llvmpipe reads an 8-bit colour texture at about twice the coordinates where an
 // explicit level (textureLod) differs between the fragments it shades together: a
 // two-pixel column of wrong colour wherever the level crosses a whole number.
-#ifdef RELIEF_PATH_FEATURES
-// The actor's textures colour what the features' own materials do not: VTK multiplies the
-// lit colour by the texture's, which reads white for the materials' share of the footprint
-// (reliefPathMaterialShare).
-float reliefPathMaterialShare();
-#define reliefTextureAtRay(sampler, uv) mix( \
-  textureGrad(sampler, uv, reliefGradX, reliefGradY), vec4(1.0), reliefPathMaterialShare())
-#else
 #define reliefTextureAtRay(sampler, uv) textureGrad(sampler, uv, reliefGradX, reliefGradY)
+// A colour texture's read (vtkReliefShaderRewrites::ReadTexturesThrough). The actor's
+// textures colour what the path features' own materials do not: VTK multiplies the lit
+// colour by the texture's, which reads white for the materials' share of the footprint
+// (reliefPathMaterialShare; where a pixel holds both, the two are mixed by their shares).
+#ifdef RELIEF_PATH_FEATURES
+float reliefPathMaterialShare();
+#define reliefColourAtRay(sampler, uv) \
+  mix(reliefTextureAtRay(sampler, uv), vec4(1.0), reliefPathMaterialShare())
+#else
+#define reliefColourAtRay(sampler, uv) reliefTextureAtRay(sampler, uv)
 #endif
 
 // Depths are read at full resolution, whatever the footprint: the searches intersect and

@@ -24,7 +24,9 @@ ReliefRay reliefPathBaseRay(ReliefRay ray, float t, float base, float span)
   ReliefRay below = ray;
   below.origin = vec3(start.x, start.y, start.z - base);
   below.direction = ray.direction * span;
-  below.screenRun = ray.screenRun * span;
+  // (an unknown run stays unknown: it asks the Automatic search for an exact search)
+  below.screenRun =
+    ray.screenRun < RELIEF_UNKNOWN_RUN ? ray.screenRun * span : RELIEF_UNKNOWN_RUN;
   return below;
 }
 
@@ -44,6 +46,7 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
   float tHit = tEnd;
   float tClear = tEnd; // where the hit's shadow rays start: in air before it
   float tFieldClear = tStart; // the last field search's clear point
+  bool fieldNormal = false; // the hit lies on the field: lit by its normal
   vec3 normal = vec3(0.0f, 0.0f, -1.0f);
   float material = -1.0f;
   int samples = 0;
@@ -75,9 +78,8 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
       // (a field search within the screen's tolerance stops below the field: its own
       // clear point, not one a fixed step back)
       tClear = stayed ? tFieldClear : (features.clear.z - ray.origin.z) / ray.direction.z;
-      bool fieldNormal = stayed || plane;
-      vec2 gradient = reliefFieldGradient(vec2(point.x, point.y));
-      normal = fieldNormal ? vec3(gradient.x, gradient.y, -1.0f) : reliefPathHitNormal;
+      fieldNormal = stayed || plane;
+      normal = reliefPathHitNormal;
       material = fieldNormal ? -1.0f : reliefPathHitMaterial;
       break;
     }
@@ -89,11 +91,22 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
     t = tFeatures + field.t * span;
     tFieldClear = (field.clear.z + base - ray.origin.z) / ray.direction.z;
     onField = true;
+    // a view ray ends on the field where its search or the turns run out (a grazing ray
+    // rounds its end short of the field's floor); a light ray that reaches the point it
+    // lights meets nothing
+    found = solidPastEnd;
+    tHit = t;
+    tClear = tFieldClear;
+    fieldNormal = true;
+    material = -1.0f;
     if (!field.hit || (t > tEnd && !solidPastEnd))
     {
-      break; // (a light ray that reaches the point it lights meets nothing)
+      break;
     }
   }
+  vec3 hit = reliefRayAt(ray, tHit);
+  vec2 gradient = reliefFieldGradient(vec2(hit.x, hit.y));
+  normal = fieldNormal ? vec3(gradient.x, gradient.y, -1.0f) : normal;
   reliefPathNearest = nearest;
   reliefPathHitNormal = dot(normal, ray.direction) > 0.0f ? -normal : normal;
   reliefPathHitMaterial = material;
@@ -111,7 +124,8 @@ ReliefHit reliefPathBaseAlone(ReliefRay ray, int linearSteps, int refinementStep
   ReliefHit field = RELIEF_PATH_BASE_SEARCH(
     reliefPathBaseRay(ray, tPlane, base, span), linearSteps, refinementSteps);
   vec2 gradient = reliefFieldGradient(vec2(field.position.x, field.position.y));
-  reliefPathHitNormal = vec3(gradient.x, gradient.y, -1.0f);
+  vec3 normal = vec3(gradient.x, gradient.y, -1.0f);
+  reliefPathHitNormal = dot(normal, ray.direction) > 0.0f ? -normal : normal;
   reliefPathHitMaterial = -1.0f;
   float t = tPlane + field.t * span;
   float tClear = (field.clear.z + base - ray.origin.z) / descent;
