@@ -2,6 +2,7 @@
 // source the GPU compiles, on vtkPathFeatureTextureFilter's textures: analytic cases
 // (a groove's floor, a V's wall, a revolved end, crossings, priorities, a crack, an
 // overhang) and random rays against the marched reference of ReliefPathFixtures.h.
+#include "ReliefMirrorMaps.h"
 #include "ReliefPathFixtures.h"
 
 #include <gtest/gtest.h>
@@ -864,4 +865,46 @@ TEST(ReliefPathSearch, OnAReliefBaseARidgeShadowsTheField)
     1.0f);
   EXPECT_EQ(reliefPathOnReliefLightVisibility(ground.clear, vec3(0.0f, -0.01f, -1.0f), 0, 0),
     1.0f);
+}
+
+// On a relief base the field's search starts where the features' walk stopped, below the
+// polygon and on either side of the field: every exact search method finds there what
+// ExactDDA finds (the mapper's SearchMethod searches the field; the mirror's turns use
+// ExactDDA).
+TEST(ReliefPathSearch, OnAReliefBaseEveryExactSearchStartsBelowThePolygon)
+{
+  const DepthField field = DepthField::FromFunction(40, 36, [](float u, float v) {
+    return 0.5f + 0.3f * std::sin(6.2831853f * 4.0f * u) * std::sin(6.2831853f * 3.0f * v) +
+      0.15f * std::cos(6.2831853f * 9.0f * (u + v));
+  });
+  CurrentField = &field;
+  const DepthPyramid pyramid = PyramidOf(field);
+  const ConeStepMap cones = ConeMapOf(field);
+  const SafetyRadiusMap radii = RadiiOf(field, 0.0);
+  CurrentPyramid = &pyramid;
+  CurrentConeMap = &cones;
+  CurrentRadii = &radii;
+  std::mt19937 random(20);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (const char* name : { "reliefSearchMaximumMipmap", "reliefSearchConeStep",
+         "reliefSearchSafetyRadius", "reliefSearchAutomatic" })
+  {
+    const Search search = FindSearch(name);
+    ASSERT_NE(search, nullptr) << name;
+    int agreeing = 0;
+    for (int k = 0; k < 500; ++k)
+    {
+      const float angle = 6.2831853f * unit(random);
+      const float run = 0.4f * unit(random);
+      const ReliefRay ray = Ray(vec2(unit(random), unit(random)),
+        vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
+      // from a point 0 to 0.9 deep on, to depth 1 (reliefPathBaseRay)
+      const float t = 0.9f * unit(random);
+      const ReliefRay below = reliefPathBaseRay(ray, t, 0.0f, 1.0f - t);
+      const ReliefHit exact = reliefSearchExactDDA(below, 0, 0);
+      const ReliefHit hit = search(below, 0, 0);
+      agreeing += hit.hit == exact.hit && std::abs(hit.t - exact.t) < 1e-4f ? 1 : 0;
+    }
+    EXPECT_GE(agreeing, 495) << name;
+  }
 }
