@@ -277,14 +277,19 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
   regions.right = vec2(0.0);
 #ifdef RELIEF_PATH_RELIEF_BASE
   // on a relief base (vtkReliefPathOnRelief.glsl) the regions' plain base is not plain:
-  // the footprint's rays wherever a feature is near, and wherever the pixel holds more
-  // than half a texel of the field, whose detail then aliases as the relief mapper's would;
-  // those of the second kind search the field alone, in a loop of their own (on llvmpipe
-  // a loop no fragment of the eight run together needs costs one pass, and most pixels
-  // are far from every feature)
+  // the footprint's rays wherever a feature is near; elsewhere, as the relief mapper's
+  // (reliefShadeFootprint), blended in as the pixel holds from a third to 0.7 of a texel
+  // of the field, whose detail then aliases, searching the field alone, in a loop of their
+  // own (on llvmpipe a loop no fragment of the eight run together needs costs one pass,
+  // and most pixels are far from every feature)
   float side = min(length(fragment.tcoordAlongX * reliefTextureSize),
     length(fragment.tcoordAlongY * reliefTextureSize));
-  bool fieldAlone = !near && reliefDepthScale > 0.0 && side > 0.5;
+  float searched = reliefDepthScale > 0.0 ? smoothstep(0.35, 0.7, side) : 0.0;
+  bool fieldAlone = !near && searched > 0.0;
+  if (fieldAlone && searched < 1.0)
+  {
+    reliefAddFootprintNormal(centre, 1.0 - searched);
+  }
   for (int k = 0; k < 4 && fieldAlone; ++k)
   {
     ReliefFragment quarter = fragment;
@@ -294,7 +299,7 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
       reliefScreenViewRay(frame, quarter), reliefLinearSteps, reliefBinarySteps);
     samples += hit.samples;
     reliefAddFootprintNormal(
-      reliefFieldNormal(hit.position.xy - round(hit.position.xy - uv), slope), 0.25);
+      reliefFieldNormal(hit.position.xy - round(hit.position.xy - uv), slope), 0.25 * searched);
   }
   if (fieldAlone)
   {
