@@ -42,7 +42,6 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
   float t = tStart;
   bool onField = false; // t is where the field's search met the field
   bool found = false;
-  bool lost = false; // a miss
   float tHit = tEnd;
   float tClear = tEnd; // where the hit's shadow rays start: in air before it
   float tFieldClear = tStart; // the last field search's clear point
@@ -60,7 +59,7 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
       reliefPathNearest.joins, reliefPathNearest.near);
     nearest = reliefPathNearer(nearest, reliefPathNearest.second, -1, 0, reliefPathNearest.near);
     float tFeatures = t >= tEnd ? t : (features.hit ? features.t : tEnd);
-    lost = !(t >= tEnd || features.hit || solidPastEnd);
+    bool lost = !(t >= tEnd || features.hit || solidPastEnd); // a miss
     vec3 point = reliefRayAt(ray, tFeatures);
     float aboveField = base + RELIEF_DEPTH(vec2(point.x, point.y)) - point.z;
     // on the field where its search left the ray, unless a feature's surface lies between
