@@ -17,6 +17,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkImagingSources import vtkImageCanvasSource2D
 from vtkmodules.vtkFiltersSources import (vtkPlaneSource, vtkRegularPolygonSource,
                                           vtkTexturedSphereSource)
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
@@ -119,6 +120,35 @@ class PathFeaturesInAPipeline(unittest.TestCase):
         plain = pixels[5, 5]
         self.assertGreater(int(groove[0]), 2 * int(groove[1]))  # red
         self.assertLess(abs(int(plain[0]) - int(plain[1])), 8)  # the actor's grey
+
+    def test_grooves_cut_into_a_height_map(self):
+        # a step: high (white) for u < 0.5, half a DepthScale down beyond, from a VTK source
+        step = vtkImageCanvasSource2D()
+        step.SetScalarTypeToUnsignedChar()
+        step.SetNumberOfScalarComponents(1)
+        step.SetExtent(0, 63, 0, 63, 0, 0)
+        step.SetDrawColor(128)
+        step.FillBox(0, 63, 0, 63)
+        step.SetDrawColor(255)
+        step.FillBox(0, 31, 0, 63)
+        flat = self.depths()
+        self.mapper.SetHeightMapConnection(step.GetOutputPort())
+        depths = self.depths()
+        self.assertTrue(self.mapper.GetDrawingReliefBase())
+        high, low = depths[20, int(0.2 * SIZE)], depths[20, int(0.8 * SIZE)]
+        self.assertAlmostEqual(high, flat[20, int(0.2 * SIZE)], places=5)  # the top
+        self.assertGreater(low, high)  # the low ground lies deeper
+        # the groove, 1 deep below the plane, cuts the high ground and the low alike (at
+        # pixels as far from the circle's centre, u = 0.1975 and 0.8025)
+        centre, left, right = SIZE // 2, int(0.2 * SIZE) - 1, SIZE - int(0.2 * SIZE)
+        self.assertGreater(depths[centre, right], low)
+        self.assertGreater(depths[centre, left], high)
+        self.assertAlmostEqual(depths[centre, left], depths[centre, right], places=5)
+        # and without the height map, the flat base again
+        self.mapper.SetHeightMapData(None)
+        self.mapper.RemoveAllInputConnections(1)
+        self.assertFalse(numpy.abs(self.depths() - flat).max() > 1e-6)
+        self.assertFalse(self.mapper.GetDrawingReliefBase())
 
 
 def equator_path():
