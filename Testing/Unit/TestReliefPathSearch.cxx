@@ -57,6 +57,64 @@ const std::vector<dvec2> Ridge = { { -1.0, 0.0 }, { -0.5, -0.4 }, { 0.5, -0.4 },
 const std::vector<dvec2> Dovetail = { { -0.5, 0.0 }, { -1.0, 0.6 }, { 1.0, 0.6 }, { 0.5, 0.0 } };
 }
 
+namespace
+{
+// What AgreeWithTheReference found.
+struct Agreement
+{
+  int Rays = 0;
+  int Agreeing = 0; // within 1e-4 of the reference's t
+  int Slivers = 0;  // stopped on matter thinner than the march's step, which it stepped over
+  int OnField = 0;  // met no material deeper than 1e-4 below `base`: a relief base's field
+};
+
+// `count` random rays up to 80 degrees from the normal (`seed`) through `search`, against
+// the marched reference down to tEnd; a ray that neither agrees nor stops on a sliver
+// fails the test, `what` naming the case.
+Agreement AgreeWithTheReference(Search search, const Reference& reference, double tEnd,
+  double base, int count, unsigned seed, const std::string& what)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  Agreement agreement;
+  for (int k = 0; k < count; ++k)
+  {
+    const float angle = 6.2831853f * unit(random);
+    const float run = 0.3f * unit(random);
+    const vec2 uv(unit(random), unit(random));
+    const ReliefRay ray = Ray(uv, vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
+    const ReliefHit hit = search(ray, 0, 0);
+    const glm::dvec3 origin(ray.origin);
+    const glm::dvec3 direction(ray.direction);
+    const double expected = reference.Hit(origin, direction, tEnd, 5e-4);
+    if (!(expected >= 0.0) || !hit.hit)
+    {
+      ADD_FAILURE() << what << ": a ray that meets nothing (the reference at " << expected
+                    << ", the search " << (hit.hit ? "hits" : "misses") << ")";
+      continue;
+    }
+    agreement.Rays += 1;
+    agreement.OnField +=
+      reliefPathHitMaterial < 0.0f && hit.position.z > base + 1e-4 ? 1 : 0;
+    if (std::abs(hit.t - expected) < 1e-4)
+    {
+      agreement.Agreeing += 1;
+    }
+    else if (hit.t < expected && reference.Solid(origin + (hit.t + 1e-5) * direction))
+    {
+      agreement.Slivers += 1;
+    }
+    else
+    {
+      ADD_FAILURE() << what << ": ray from " << ray.origin.x << " " << ray.origin.y
+                    << " along " << ray.direction.x << " " << ray.direction.y << " hits at "
+                    << hit.t << ", the reference at " << expected;
+    }
+  }
+  return agreement;
+}
+}
+
 TEST(ReliefPathSearch, GrooveFloorAndPlainSurface)
 {
   Scene scene;
@@ -228,41 +286,11 @@ TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
   {
     Built built(scene, resolution);
     Reference reference(scene, built.Base);
-    std::mt19937 random(18);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    int rays = 0;
-    int agreeing = 0;
-    int slivers = 0;
-    for (int k = 0; k < 600; ++k)
-    {
-      // up to 80 degrees from the normal, features 0.05 to 0.1 wide, 0.4 to 1.6 deep
-      const float angle = 6.2831853f * unit(random);
-      const float run = 0.3f * unit(random);
-      const vec2 uv(unit(random), unit(random));
-      const ReliefRay ray = Ray(uv, vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
-      const ReliefHit hit = reliefSearchPathFeatures(ray, 0, 0);
-      const glm::dvec3 origin(ray.origin);
-      const glm::dvec3 direction(ray.direction);
-      const double expected = reference.Hit(origin, direction, built.Deepest, 5e-4);
-      ASSERT_GE(expected, 0.0);
-      ASSERT_TRUE(hit.hit);
-      rays += 1;
-      if (std::abs(hit.t - expected) < 1e-4)
-      {
-        agreeing += 1;
-      }
-      else if (hit.t < expected && reference.Solid(origin + (hit.t + 1e-5) * direction))
-      {
-        slivers += 1; // matter thinner than the march's step, which it stepped over
-      }
-      else
-      {
-        ADD_FAILURE() << "grid " << resolution << ": ray from " << ray.origin.x << " "
-                      << ray.origin.y << " along " << ray.direction.x << " " << ray.direction.y
-                      << " hits at " << hit.t << ", the reference at " << expected;
-      }
-    }
-    EXPECT_GE(agreeing, rays * 99 / 100) << slivers << " slivers, grid " << resolution;
+    // up to 80 degrees from the normal, features 0.05 to 0.1 wide, 0.4 to 1.6 deep
+    const Agreement agreement = AgreeWithTheReference(&reliefSearchPathFeatures, reference,
+      built.Deepest, built.Base, 600, 18, "grid " + std::to_string(resolution));
+    EXPECT_GE(agreement.Agreeing, agreement.Rays * 99 / 100)
+      << agreement.Slivers << " slivers, grid " << resolution;
   }
 }
 
@@ -702,44 +730,10 @@ TEST(ReliefPathSearch, OnAReliefBaseAgreesWithTheMarchedReference)
   Built built(scene);
   Reference reference(scene, built.Base);
   reference.SetReliefBase(&field);
-  std::mt19937 random(8);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  int rays = 0;
-  int agreeing = 0;
-  int slivers = 0;
-  int onField = 0;
-  for (int k = 0; k < 800; ++k)
-  {
-    const float angle = 6.2831853f * unit(random);
-    const float run = 0.3f * unit(random);
-    const vec2 uv(unit(random), unit(random));
-    const ReliefRay ray = Ray(uv, vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
-    const ReliefHit hit = reliefSearchPathFeaturesOnRelief(ray, 0, 0);
-    const glm::dvec3 origin(ray.origin);
-    const glm::dvec3 direction(ray.direction);
-    const double expected =
-      reference.Hit(origin, direction, std::max(built.Deepest, built.Base + 1.0), 5e-4);
-    ASSERT_GE(expected, 0.0);
-    ASSERT_TRUE(hit.hit);
-    rays += 1;
-    onField += reliefPathHitMaterial < 0.0f && hit.position.z > built.Base + 1e-4 ? 1 : 0;
-    if (std::abs(hit.t - expected) < 1e-4)
-    {
-      agreeing += 1;
-    }
-    else if (hit.t < expected && reference.Solid(origin + (hit.t + 1e-5) * direction))
-    {
-      slivers += 1;
-    }
-    else
-    {
-      ADD_FAILURE() << "ray from " << ray.origin.x << " " << ray.origin.y << " along "
-                    << ray.direction.x << " " << ray.direction.y << " hits at " << hit.t
-                    << ", the reference at " << expected;
-    }
-  }
-  EXPECT_GE(agreeing, rays * 99 / 100) << slivers << " slivers";
-  EXPECT_GT(onField, rays / 4); // the field is met, not only the features
+  const Agreement agreement = AgreeWithTheReference(&reliefSearchPathFeaturesOnRelief,
+    reference, std::max(built.Deepest, built.Base + 1.0), built.Base, 800, 8, "relief base");
+  EXPECT_GE(agreement.Agreeing, agreement.Rays * 99 / 100) << agreement.Slivers << " slivers";
+  EXPECT_GT(agreement.OnField, agreement.Rays / 4); // the field is met, not only the features
 }
 
 // A brick's side shades the mortar beside it, except where a groove cut through the brick

@@ -30,6 +30,19 @@ ReliefRay reliefPathBaseRay(ReliefRay ray, float t, float base, float span)
   return below;
 }
 
+// The field's search along a straight ray from its point t on, down to the field's depth
+// 1, as a hit of the ray itself (its t, its clear point).
+ReliefHit reliefPathFieldFrom(
+  ReliefRay ray, float t, float base, int linearSteps, int refinementSteps)
+{
+  float descent = max(ray.direction.z, 1e-30f);
+  float span = (1.0f - (reliefRayAt(ray, t).z - base)) / descent;
+  ReliefHit field = RELIEF_PATH_BASE_SEARCH(
+    reliefPathBaseRay(ray, t, base, span), linearSteps, refinementSteps);
+  float tClear = (field.clear.z + base - ray.origin.z) / descent;
+  return reliefHitAt(ray, t + field.t * span, tClear, field.hit, field.samples);
+}
+
 // The first point of the solid along a straight ray from tStart to tEnd, or a miss at
 // tEnd; where solidPastEnd, every point beyond tEnd is solid (it lies below the deepest
 // cut). Sets what reliefPathWalk sets: reliefPathHitNormal, facing back along the ray
@@ -83,12 +96,10 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
       break;
     }
     // above the field: its search from there, down to its deepest
-    float span = (1.0f - (point.z - base)) / max(ray.direction.z, 1e-30f);
-    ReliefHit field = RELIEF_PATH_BASE_SEARCH(
-      reliefPathBaseRay(ray, tFeatures, base, span), linearSteps, refinementSteps);
+    ReliefHit field = reliefPathFieldFrom(ray, tFeatures, base, linearSteps, refinementSteps);
     samples += field.samples;
-    t = tFeatures + field.t * span;
-    tFieldClear = (field.clear.z + base - ray.origin.z) / ray.direction.z;
+    t = field.t;
+    tFieldClear = (field.clear.z - ray.origin.z) / ray.direction.z;
     onField = true;
     // a view ray ends on the field where its search or the turns run out (a grazing ray
     // rounds its end short of the field's floor); a light ray that reaches the point it
@@ -117,18 +128,13 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
 ReliefHit reliefPathBaseAlone(ReliefRay ray, int linearSteps, int refinementSteps)
 {
   float base = RELIEF_PATH_TEXEL(0).x;
-  float descent = max(ray.direction.z, 1e-30f);
-  float tPlane = max((base - ray.origin.z) / descent, 0.0f);
-  float span = (1.0f - max(ray.origin.z + tPlane * ray.direction.z - base, 0.0f)) / descent;
-  ReliefHit field = RELIEF_PATH_BASE_SEARCH(
-    reliefPathBaseRay(ray, tPlane, base, span), linearSteps, refinementSteps);
+  float tPlane = max((base - ray.origin.z) / max(ray.direction.z, 1e-30f), 0.0f);
+  ReliefHit field = reliefPathFieldFrom(ray, tPlane, base, linearSteps, refinementSteps);
   vec2 gradient = reliefFieldGradient(vec2(field.position.x, field.position.y));
   vec3 normal = vec3(gradient.x, gradient.y, -1.0f);
   reliefPathHitNormal = dot(normal, ray.direction) > 0.0f ? -normal : normal;
   reliefPathHitMaterial = -1.0f;
-  float t = tPlane + field.t * span;
-  float tClear = (field.clear.z + base - ray.origin.z) / descent;
-  return reliefHitAt(ray, t, tClear, field.hit, field.samples);
+  return field;
 }
 
 // The search of the path features on the relief base: the view ray from the polygon down.
