@@ -518,7 +518,7 @@ bool vtkReliefImpostorFilter::CheckSettings()
   return true;
 }
 
-void vtkReliefImpostorFilter::ChooseBox(const double bounds[6])
+int vtkReliefImpostorFilter::PadBounds(const double bounds[6], double padding, double box[6])
 {
   double largest = 0.0;
   double diagonal = 0.0;
@@ -529,8 +529,9 @@ void vtkReliefImpostorFilter::ChooseBox(const double bounds[6])
     diagonal += side * side;
   }
   diagonal = std::sqrt(diagonal);
-  const double pad = this->Padding * diagonal;
+  const double pad = padding * diagonal;
   const double thinnest = 0.01 * largest;
+  int thickened = 0;
   for (int axis = 0; axis < 3; ++axis)
   {
     double low = bounds[2 * axis] - pad;
@@ -540,12 +541,35 @@ void vtkReliefImpostorFilter::ChooseBox(const double bounds[6])
       const double middle = 0.5 * (low + high);
       low = middle - 0.5 * thinnest;
       high = middle + 0.5 * thinnest;
+      thickened |= 1 << axis;
+    }
+    box[2 * axis] = low;
+    box[2 * axis + 1] = high;
+  }
+  return thickened;
+}
+
+unsigned short vtkReliefImpostorFilter::EncodeDepth(float depth)
+{
+  if (!(depth < 1.0f))
+  {
+    return 65535;
+  }
+  const float code = std::round(std::max(depth, 0.0f) * 65535.0f);
+  return static_cast<unsigned short>(std::min(code, 65534.0f));
+}
+
+void vtkReliefImpostorFilter::ChooseBox(const double bounds[6])
+{
+  const int thickened = PadBounds(bounds, this->Padding, this->Box);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (thickened & (1 << axis))
+    {
       vtkWarningMacro("The mesh is flat along " << "xyz"[axis]
                                                 << ": its box is thickened to a hundredth of its "
                                                    "largest side. Raise Padding to set it.");
     }
-    this->Box[2 * axis] = low;
-    this->Box[2 * axis + 1] = high;
   }
 }
 

@@ -136,6 +136,23 @@ public:
   /// The box the last update captured: xmin, xmax, ymin, ymax, zmin, zmax.
   vtkGetVector6Macro(Box, double);
 
+  /**
+   * The box of a mesh with these bounds: padded by `padding` of their diagonal, and
+   * thickened to a hundredth of its largest side along an axis where it is thinner. The
+   * bits 1, 2, 4 of the result tell which of x, y, z were thickened.
+   */
+  static int PadBounds(const double bounds[6], double padding, double box[6]);
+
+  ///@{
+  /**
+   * A depth of the depth output as 16 bits, as vtkOpenGLReliefImpostorMapper holds it: an
+   * empty column (depth 1) is 65535 and any surface at most 65534, so that a surface on
+   * the far face stays apart from emptiness. DecodeDepth gives the depth it stands for.
+   */
+  static unsigned short EncodeDepth(float depth);
+  static float DecodeDepth(unsigned short code) { return code / 65535.0f; }
+  ///@}
+
   /// The share of the mesh's area the last update's views did not see (0 to 1).
   vtkGetMacro(UnseenSurfaceFraction, double);
 

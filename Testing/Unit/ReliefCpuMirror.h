@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -22,9 +23,15 @@ struct DepthField
   int Width = 0;
   int Height = 0;
   std::vector<float> Depths; // row j = 0 is v's bottom row
+  bool ClampToEdge = false;  // GL_CLAMP_TO_EDGE (an impostor's views), not GL_REPEAT
 
   float At(int i, int j) const
   {
+    if (this->ClampToEdge)
+    {
+      i = std::min(std::max(i, 0), this->Width - 1);
+      j = std::min(std::max(j, 0), this->Height - 1);
+    }
     i = ((i % this->Width) + this->Width) % this->Width;
     j = ((j % this->Height) + this->Height) % this->Height;
     return this->Depths[static_cast<size_t>(j) * this->Width + i];
@@ -118,12 +125,32 @@ struct PathTextures
   vec4 Texel(int index) const { return this->Data[static_cast<size_t>(index)]; }
 };
 
+/// An impostor's views (vtkReliefImpostorFilter's), as vtkOpenGLReliefImpostorMapper
+/// uploads them: each view's field (clamped at its edges), its pyramid for MaximumMipmap,
+/// and its projection from model coordinates.
+struct ImpostorViews
+{
+  std::vector<DepthField> Fields;
+  std::vector<DepthPyramid> Pyramids; // one per view, or none
+  std::vector<mat4> Projections;
+};
+
 /// The field and the acceleration maps the shader code reads; set them before a search.
 inline const DepthField* CurrentField = nullptr;
 inline const DepthPyramid* CurrentPyramid = nullptr;
 inline const ConeStepMap* CurrentConeMap = nullptr;
 inline const SafetyRadiusMap* CurrentRadii = nullptr;
 inline const PathTextures* CurrentPaths = nullptr;
+inline const ImpostorViews* CurrentImpostor = nullptr;
+
+/// RELIEF_IMPOSTOR_SELECT: the shader code reads view `view` of CurrentImpostor.
+inline void SelectImpostorView(int view)
+{
+  CurrentField = &CurrentImpostor->Fields[static_cast<size_t>(view)];
+  CurrentPyramid = CurrentImpostor->Pyramids.empty()
+    ? nullptr
+    : &CurrentImpostor->Pyramids[static_cast<size_t>(view)];
+}
 
 inline float SampleCurrentField(vec2 uv)
 {
@@ -158,6 +185,17 @@ namespace
 #define RELIEF_MIRROR_FLAT_FRAME
 #define RELIEF_MIRROR_FRAME "vtkReliefTangentFrame.glsl"
 #include "ReliefCpuMirrorSources.h"
+/// The impostor frame (straight rays), each view searched by ImpostorSearch.
+ReliefHit (*ImpostorSearch)(ReliefRay ray, int linearSteps, int refinementSteps) = nullptr;
+#define RELIEF_SEARCH ImpostorSearch
+#define RELIEF_IMPOSTOR_VIEWS static_cast<int>(CurrentImpostor->Fields.size())
+#define RELIEF_IMPOSTOR_PROJECTION(view) CurrentImpostor->Projections[static_cast<size_t>(view)]
+#define RELIEF_IMPOSTOR_SELECT(view) SelectImpostorView(view)
+#include "vtkReliefImpostorFrame.glsl"
+#undef RELIEF_SEARCH
+#undef RELIEF_IMPOSTOR_VIEWS
+#undef RELIEF_IMPOSTOR_PROJECTION
+#undef RELIEF_IMPOSTOR_SELECT
 }
 }
 /// The quadric frame, measuring depth along the normal (Eq. 7)

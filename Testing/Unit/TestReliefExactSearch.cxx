@@ -3,6 +3,8 @@
 // brute-force reference of ReliefSearchReference.h.
 #include "ReliefSearchReference.h"
 
+#include <random>
+
 namespace
 {
 using namespace ReliefCpuMirror;
@@ -111,6 +113,46 @@ TEST_F(ReliefExactSearch, AFloorAtTheDeepestLevelIsMetAtTheEndOfTheRay)
       ASSERT_NEAR(hit.t, 1.0f, 1e-5f);
       ASSERT_LT(hit.clear.z, hit.position.z);
     }
+  }
+}
+
+TEST_F(ReliefExactSearch, ExactSearchesFindWhereRisingRaysEnterTheField)
+{
+  // an impostor's views behind the object are searched along rays that rise toward their
+  // face (vtkReliefImpostorFrame.glsl): from any depth, level or rising, the first point on
+  // or below the field, or a miss
+  std::mt19937 generator(41);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (const Scene& scene : *AllScenes)
+  {
+    Use(scene);
+    int wrong = 0;
+    for (int k = 0; k < 2000; ++k)
+    {
+      const float azimuth = 2.0f * float(Pi) * unit(generator);
+      const float run = 0.02f + 0.5f * unit(generator);
+      ReliefRay ray = reliefViewRay(vec2(unit(generator), unit(generator)), vec3(0.0f));
+      ray.origin.z = unit(generator);
+      ray.direction = vec3(run * std::cos(azimuth), run * std::sin(azimuth),
+        k % 8 == 0 ? 0.0f : -ray.origin.z * unit(generator));
+      const double reference = ReferenceHit(scene.Field, ray);
+      const bool meets = reference < 1.0;
+      for (const ReliefHit& hit :
+        { reliefSearchExactDDA(ray, 0, 0), reliefSearchMaximumMipmap(ray, 0, 0) })
+      {
+        const bool right = hit.hit == meets &&
+          (!meets || HitError(scene.Field, ray, hit.t, reference) <= Tolerance);
+        if (!right && ++wrong <= 3)
+        {
+          ADD_FAILURE() << scene.Name << ": t " << hit.t << (hit.hit ? " (hit)" : " (miss)")
+                        << " against " << reference << " for the ray from (" << ray.origin.x
+                        << ", " << ray.origin.y << ", " << ray.origin.z << ") along ("
+                        << ray.direction.x << ", " << ray.direction.y << ", "
+                        << ray.direction.z << ")";
+        }
+      }
+    }
+    EXPECT_EQ(wrong, 0) << scene.Name << ", of 2000 rays";
   }
 }
 

@@ -88,7 +88,7 @@ vec2 reliefFieldGradient(vec2 uv)
 float reliefClearBefore(ReliefGridRay grid, float t)
 {
   float run = max(abs(grid.direction.x), abs(grid.direction.y));
-  return max(0.0f, t - min(1e-3f / grid.descent, 0.05f / max(run, 1e-30f)));
+  return max(0.0f, t - min(1e-3f / max(abs(grid.descent), 1e-30f), 0.05f / max(run, 1e-30f)));
 }
 
 ReliefHit reliefGridHit(ReliefRay ray, ReliefGridRay grid, float t, bool found, int samples)
@@ -278,8 +278,13 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray, int linearSteps, int refineme
       grid, vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
     float tOut = min(exits.x, exits.y);
     samples += 1;
-    float tReach = (RELIEF_PYRAMID_DEPTH(node, level) - grid.depth) / grid.descent;
-    if (tReach <= min(tOut, 1.0f))
+    // where the ray reaches the node's top: a ray that descends, by the node's far side,
+    // from tReach on; one that rises (the impostor's views behind it), at its near side
+    float top = RELIEF_PYRAMID_DEPTH(node, level);
+    float tReach = grid.descent > 0.0f ? (top - grid.depth) / grid.descent : t;
+    bool reaches = grid.descent > 0.0f ? tReach <= min(tOut, 1.0f)
+                                       : grid.depth + t * grid.descent >= top;
+    if (reaches)
     {
       if (level == 0)
       {
