@@ -12,6 +12,7 @@ const std::vector<vtkReliefShaderRewrites::Tag>& vtkReliefShaderRewrites::GetTag
     { vtkShader::Fragment, FragmentDeclarations },
     { vtkShader::Fragment, FragmentStart },
     { vtkShader::Fragment, FragmentDepth },
+    { vtkShader::Fragment, FragmentColour },
     { vtkShader::Fragment, FragmentNormal },
     { vtkShader::Fragment, FragmentOutput },
     { vtkShader::Geometry, GeometryDeclarations },

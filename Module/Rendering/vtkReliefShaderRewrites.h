@@ -40,6 +40,7 @@ public:
   static constexpr const char* FragmentDeclarations = "//VTK::Edges::Dec";
   static constexpr const char* FragmentStart = "//VTK::UniformFlow::Impl";
   static constexpr const char* FragmentDepth = "//VTK::Depth::Impl";
+  static constexpr const char* FragmentColour = "//VTK::Color::Impl";
   static constexpr const char* FragmentNormal = "//VTK::Normal::Impl"; // lit surfaces only
   static constexpr const char* FragmentOutput = "//VTK::DepthPeeling::Impl";
   static constexpr const char* GeometryDeclarations = "//VTK::Normal::Dec";

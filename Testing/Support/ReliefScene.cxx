@@ -1,7 +1,10 @@
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkElevationFilter.h"
 #include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericDataObjectReader.h"
@@ -14,6 +17,7 @@
 #include "vtkOBJReader.h"
 #include "vtkOpenGLDerivativeReliefMapper.h"
 #include "vtkOpenGLQuadricReliefMapper.h"
+#include "vtkOpenGLReliefImpostorMapper.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkReliefSearchMethod.h"
 #include "vtkOpenImageIOReader.h"
@@ -36,6 +40,9 @@
 #include "vtkSTLReader.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTexture.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
 #include "vtkTexturedSphereSource.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
@@ -206,6 +213,63 @@ vtkSmartPointer<vtkPolyData> Sphere(int resolution)
   sphere->DeepCopy(source->GetOutput());
   TileTextureCoordinates(sphere, 4.0, 2.0);
   return sphere;
+}
+
+vtkSmartPointer<vtkPolyData> ImpostorObject(int resolution)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.5);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution / 2);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(0.3, 0.3, 0.3);
+  cube->SetXLength(0.6);
+  cube->SetYLength(0.6);
+  cube->SetZLength(0.6);
+  vtkNew<vtkSuperquadricSource> ring;
+  ring->ToroidalOn();
+  ring->SetThetaResolution(resolution);
+  ring->SetPhiResolution(resolution / 2);
+  ring->SetThickness(0.25);
+  ring->SetSize(0.75);
+  ring->SetScale(1.0, 1.0, 1.0);
+  vtkNew<vtkTransform> tilt;
+  tilt->RotateX(90.0 - 25.0); // the source's ring lies in y = 0
+  vtkNew<vtkTransformPolyDataFilter> tilted;
+  tilted->SetInputConnection(ring->GetOutputPort());
+  tilted->SetTransform(tilt);
+  vtkNew<vtkAppendPolyData> parts;
+  parts->AddInputConnection(sphere->GetOutputPort());
+  parts->AddInputConnection(cube->GetOutputPort());
+  parts->AddInputConnection(tilted->GetOutputPort());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(parts->GetOutputPort());
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(triangles->GetOutputPort());
+  elevation->SetLowPoint(0.0, 0.0, -0.6);
+  elevation->SetHighPoint(0.0, 0.0, 0.6);
+  elevation->Update();
+  auto object = vtkSmartPointer<vtkPolyData>::New();
+  object->DeepCopy(elevation->GetOutput());
+  return object;
+}
+
+vtkSmartPointer<vtkActor> MeshActor(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> ImpostorActor(vtkPolyData* mesh)
+{
+  vtkNew<vtkOpenGLReliefImpostorMapper> mapper;
+  mapper->SetInputData(mesh);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
 }
 
 vtkSmartPointer<vtkPolyData> Cylinder(int resolution, double sweep)

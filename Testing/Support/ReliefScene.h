@@ -159,6 +159,19 @@ private:
   std::vector<vtkSmartPointer<vtkActor>> Actors;
 };
 
+/**
+ * A detailed object to stand in for a scanned part: a sphere, a cube half sunk into it
+ * and a ring around both, tilted (concave where the ring passes the sphere), with point
+ * scalars of elevation along z; about 2 x resolution^2 triangles. The same object is
+ * drawn by the stock mapper as the ground truth of its impostor.
+ */
+vtkSmartPointer<vtkPolyData> ImpostorObject(int resolution);
+
+/// The actor of a mesh drawn by VTK's stock mapper, and of its relief impostor
+/// (vtkOpenGLReliefImpostorMapper), both lit alike.
+vtkSmartPointer<vtkActor> MeshActor(vtkPolyData* mesh);
+vtkSmartPointer<vtkActor> ImpostorActor(vtkPolyData* mesh);
+
 /// Wall-clock milliseconds of each of `frames` renders after `warmup` renders.
 std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames);
 

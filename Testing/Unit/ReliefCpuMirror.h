@@ -133,6 +133,7 @@ struct ImpostorViews
   std::vector<DepthField> Fields;
   std::vector<DepthPyramid> Pyramids; // one per view, or none
   std::vector<mat4> Projections;
+  std::vector<float> DepthRatios; // the box's depth along each view over its face's size
 };
 
 /// The field and the acceleration maps the shader code reads; set them before a search.
@@ -191,11 +192,13 @@ ReliefHit (*ImpostorSearch)(ReliefRay ray, int linearSteps, int refinementSteps)
 #define RELIEF_IMPOSTOR_VIEWS static_cast<int>(CurrentImpostor->Fields.size())
 #define RELIEF_IMPOSTOR_PROJECTION(view) CurrentImpostor->Projections[static_cast<size_t>(view)]
 #define RELIEF_IMPOSTOR_SELECT(view) SelectImpostorView(view)
+#define RELIEF_IMPOSTOR_DEPTH_RATIO(view) CurrentImpostor->DepthRatios[static_cast<size_t>(view)]
 #include "vtkReliefImpostorFrame.glsl"
 #undef RELIEF_SEARCH
 #undef RELIEF_IMPOSTOR_VIEWS
 #undef RELIEF_IMPOSTOR_PROJECTION
 #undef RELIEF_IMPOSTOR_SELECT
+#undef RELIEF_IMPOSTOR_DEPTH_RATIO
 }
 }
 /// The quadric frame, measuring depth along the normal (Eq. 7)

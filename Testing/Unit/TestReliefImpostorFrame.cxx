@@ -57,6 +57,11 @@ ImpostorViews ViewsOf(vtkReliefImpostorFilter* filter)
       }
     }
     views.Projections.push_back(projection);
+    const double* box = filter->GetBox();
+    const int axis = dimensions[2] == 1 ? 2 : view / 2;
+    const double side[3] = { box[1] - box[0], box[3] - box[2], box[5] - box[4] };
+    views.DepthRatios.push_back(
+      static_cast<float>(side[axis] / std::sqrt(side[(axis + 1) % 3] * side[(axis + 2) % 3])));
   }
   return views;
 }

@@ -18,9 +18,11 @@
 // their intersection draws it.)
 //
 // The includer defines RELIEF_IMPOSTOR_VIEWS (1 or 6), RELIEF_IMPOSTOR_PROJECTION(view)
-// (the view's mat4, model coordinates to (u w, v w, depth w, w)) and
+// (the view's mat4, model coordinates to (u w, v w, depth w, w)),
 // RELIEF_IMPOSTOR_SELECT(view), which makes RELIEF_DEPTH, RELIEF_CELL_DEPTHS and the
-// search's acceleration reads read that view's field.
+// search's acceleration reads read that view's field, and
+// RELIEF_IMPOSTOR_DEPTH_RATIO(view), the box's depth along the view over the size of its
+// face, which makes the fields' slopes comparable between views.
 
 // How far inside each face of the box the rays are clipped, as a share of its side: a
 // field's empty columns hold depth 1, which a ray along its far face would otherwise
@@ -114,9 +116,9 @@ vec3 reliefImpostorPointAt(ReliefImpostorView view, float share)
   return reliefImpostorProjected(mix(view.entry, view.exit, share));
 }
 
-// Whether the selected view's field holds `point` (u, v, depth): on or behind its
-// surface, the bilinear patch the exact searches intersect (reliefCellGap's polynomial).
-bool reliefImpostorHolds(vec3 point)
+// The selected view's field at `point` (u, v, depth): the depth of the bilinear patch the
+// exact searches intersect (reliefCellGap's polynomial) and its gradient in (u, v).
+vec3 reliefImpostorField(vec3 point)
 {
   vec2 size = RELIEF_DEPTH_SIZE;
   vec2 at = vec2(point.x * size.x - 0.5f, point.y * size.y - 0.5f);
@@ -124,8 +126,15 @@ bool reliefImpostorHolds(vec3 point)
   vec4 depths = RELIEF_CELL_DEPTHS(cell);
   float x = at.x - cell.x;
   float y = at.y - cell.y;
-  float field = mix(mix(depths.x, depths.y, x), mix(depths.z, depths.w, x), y);
-  return point.z >= field - RELIEF_IMPOSTOR_DEPTH_TOLERANCE;
+  return vec3(mix(mix(depths.x, depths.y, x), mix(depths.z, depths.w, x), y),
+    mix(depths.y - depths.x, depths.w - depths.z, y) * size.x,
+    mix(depths.z - depths.x, depths.w - depths.y, x) * size.y);
+}
+
+// Whether the selected view's field holds `point`: on or behind its surface.
+bool reliefImpostorHolds(vec3 point)
+{
+  return point.z >= reliefImpostorField(point).x - RELIEF_IMPOSTOR_DEPTH_TOLERANCE;
 }
 
 struct ReliefImpostorHit
@@ -190,4 +199,29 @@ ReliefImpostorHit reliefImpostorSearch(
     result.view = outside;
   }
   return result;
+}
+
+// The view to colour and light the hit from: of the views whose surface the hit lies on
+// (within two depth texels of it), the one that sees that surface most squarely, where its
+// field is least steep. The view whose search placed the hit need not be it: along an
+// edge, a side view's field slants between its texel rows (the bilinear field's skirt)
+// and may place the hit on the top face, where the side view's textures hold the side.
+int reliefImpostorShadingView(ReliefImpostorSegment segment, ReliefImpostorHit hit)
+{
+  int chosen = hit.view;
+  float flattest = 1e30f;
+  for (int view = 0; view < RELIEF_IMPOSTOR_VIEWS; ++view)
+  {
+    RELIEF_IMPOSTOR_SELECT(view);
+    vec3 point = reliefImpostorPointAt(reliefImpostorView(view, segment), hit.share);
+    vec3 field = reliefImpostorField(point);
+    vec2 size = RELIEF_DEPTH_SIZE;
+    float slope = RELIEF_IMPOSTOR_DEPTH_RATIO(view) * length(vec2(field.y, field.z));
+    if (point.z - field.x <= 2.0f / max(size.x, size.y) && field.x < 1.0f && slope < flattest)
+    {
+      chosen = view;
+      flattest = slope;
+    }
+  }
+  return chosen;
 }

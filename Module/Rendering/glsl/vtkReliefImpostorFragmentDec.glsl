@@ -1,0 +1,59 @@
+// vtkRelief impostor fragment declarations (vtkOpenGLReliefImpostorMapper): the views'
+// textures, one layer per view, and the reads the searches and the impostor frame make
+// through them (vtkReliefCommon.glsl's macros, on the selected view's layer).
+uniform sampler2DArray reliefImpostorDepths;   // the views' depths, 16 bits, clamped
+uniform sampler2DArray reliefImpostorPyramids; // MaximumMipmap's atlases, 16 bits
+uniform sampler2DArray reliefImpostorColours;  // premultiplied RGBA, mipmapped
+uniform sampler2DArray reliefImpostorNormals;  // model-space normals, mipmapped
+uniform vec2 reliefTextureSize;                // depth texels per view side
+uniform mat4 reliefImpostorProjections[RELIEF_IMPOSTOR_VIEWS]; // model to the views
+uniform float reliefImpostorDepthRatios[RELIEF_IMPOSTOR_VIEWS]; // box depth / face size
+uniform vec3 reliefImpostorLow;                // the capture's box, model coordinates
+uniform vec3 reliefImpostorHigh;
+uniform mat4 reliefImpostorVCMC;               // view to model, without VBO shift/scale
+uniform mat4 reliefImpostorMCVC;
+uniform mat3 reliefImpostorNormalMatrix;       // model to view for normals
+uniform mat4 reliefVCDCMatrix;
+uniform float reliefNearVC;                    // the near plane's distance
+uniform float reliefPixelSpread;   // a pixel's size per unit of distance (perspective), or
+                                   // its size (parallel projection), in view units
+uniform float reliefColourTexelsPerUnit;       // colour texels per view unit
+uniform int reliefLinearSteps;
+uniform int reliefBinarySteps;
+uniform int reliefDisplayMode;                 // 0 shaded, 1 sample count
+in vec4 reliefImpostorVC;
+
+float reliefImpostorLayer = 0.0; // the view the reads below read
+#define RELIEF_IMPOSTOR_SELECT(view) reliefImpostorLayer = float(view)
+#define RELIEF_IMPOSTOR_PROJECTION(view) reliefImpostorProjections[view]
+#define RELIEF_IMPOSTOR_DEPTH_RATIO(view) reliefImpostorDepthRatios[view]
+#define RELIEF_DEPTH(uv) textureLod(reliefImpostorDepths, vec3(uv, reliefImpostorLayer), 0.0).r
+#define RELIEF_DEPTH_SIZE reliefTextureSize
+#ifdef GL_ARB_texture_gather
+#define RELIEF_CELL_DEPTHS(cell) textureGather(reliefImpostorDepths, \
+  vec3(((cell) + 1.0) / reliefTextureSize, reliefImpostorLayer)).wzxy
+#else
+#define RELIEF_CELL_DEPTHS(cell) reliefCellDepths(cell)
+vec4 reliefCellDepths(vec2 cell)
+{
+  ivec2 last = ivec2(reliefTextureSize) - 1;
+  ivec2 low = clamp(ivec2(cell), ivec2(0), last);
+  ivec2 high = clamp(ivec2(cell) + 1, ivec2(0), last);
+  int layer = int(reliefImpostorLayer);
+  return vec4(texelFetch(reliefImpostorDepths, ivec3(low, layer), 0).r,
+    texelFetch(reliefImpostorDepths, ivec3(high.x, low.y, layer), 0).r,
+    texelFetch(reliefImpostorDepths, ivec3(low.x, high.y, layer), 0).r,
+    texelFetch(reliefImpostorDepths, ivec3(high, layer), 0).r);
+}
+#endif
+// vtkMaximumMipmapFilter's atlas of each view, as vtkReliefSearchMethod describes it
+uniform int reliefPyramidTop;
+uniform float reliefPyramidRows[32];
+#define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefImpostorPyramids, ivec3(ivec2(node) + \
+  (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), \
+  int(reliefImpostorLayer)), 0).r
+#define RELIEF_PYRAMID_TOP reliefPyramidTop
+
+//VTK::Relief::Common
+//VTK::Relief::Search
+//VTK::Relief::Frame

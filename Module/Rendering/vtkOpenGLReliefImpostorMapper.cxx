@@ -1,0 +1,736 @@
+#include "vtkOpenGLReliefImpostorMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCubeSource.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMaximumMipmapFilter.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLReliefMapper.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkReliefArrayTexture.h"
+#include "vtkReliefForwardMessages.h"
+#include "vtkReliefImpostorFilter.h"
+#include "vtkReliefSearchMethod.h"
+#include "vtkReliefShaderRewrites.h"
+#include "vtkRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include "vtkReliefCommon.h"
+#include "vtkReliefGridSearch.h"
+#include "vtkReliefImpostorFragmentDec.h"
+#include "vtkReliefImpostorFragmentImpl.h"
+#include "vtkReliefImpostorFrame.h"
+#include "vtkReliefSearch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkOpenGLReliefImpostorMapper);
+
+namespace
+{
+using Mapper = vtkOpenGLReliefMapper;
+
+// A key matrix of VTK's (stored transposed) as the matrix it stands for.
+void FromKeyMatrix(vtkMatrix4x4* key, vtkMatrix4x4* matrix)
+{
+  vtkMatrix4x4::Transpose(key, matrix);
+}
+
+// `matrix` as the GLSL mat4 uniform `name`: vtkShaderProgram uploads a vtkMatrix4x4's
+// rows as the columns of the GLSL matrix.
+void SetMatrixUniform(vtkShaderProgram* program, const char* name, vtkMatrix4x4* matrix)
+{
+  vtkNew<vtkMatrix4x4> transposed;
+  vtkMatrix4x4::Transpose(matrix, transposed);
+  program->SetUniformMatrix(name, transposed);
+}
+
+// One layer of `image` (a slice of the capture), as it is laid out in memory.
+vtkIdType LayerTexels(vtkImageData* image)
+{
+  return static_cast<vtkIdType>(image->GetDimensions()[0]) * image->GetDimensions()[1];
+}
+}
+
+vtkOpenGLReliefImpostorMapper::vtkOpenGLReliefImpostorMapper()
+{
+  vtkReliefForwardMessages(this->ImpostorFilter, this);
+}
+
+vtkOpenGLReliefImpostorMapper::~vtkOpenGLReliefImpostorMapper() = default;
+
+vtkReliefImpostorFilter* vtkOpenGLReliefImpostorMapper::GetImpostorFilter()
+{
+  return this->ImpostorFilter;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefImpostorMapper::SetSearchMethod(int method)
+{
+  if (!vtkReliefSearchMethod::Get(method))
+  {
+    vtkWarningMacro("Unknown search method " << method << ": use one of "
+                    "vtkOpenGLReliefMapper::SearchMethods. The method is left as it was.");
+    return;
+  }
+  if (method != this->SearchMethod)
+  {
+    this->SearchMethod = method;
+    this->WarnedSearchMethod = false;
+    this->Modified();
+  }
+}
+
+int vtkOpenGLReliefImpostorMapper::ImpostorSearchMethod(int method)
+{
+  switch (method)
+  {
+    case Mapper::LINEAR:
+    case Mapper::LINEAR_BINARY:
+    case Mapper::SECANT:
+    case Mapper::EXACT_DDA:
+      return method;
+    default:
+      return Mapper::MAXIMUM_MIPMAP;
+  }
+}
+
+const vtkReliefSearchMethod& vtkOpenGLReliefImpostorMapper::GetActiveSearch()
+{
+  return *vtkReliefSearchMethod::Get(this->ActiveSearchMethod);
+}
+
+void vtkOpenGLReliefImpostorMapper::SetLinearSteps(int steps)
+{
+  const int clamped = std::min(std::max(steps, 1), 4096);
+  if (clamped != steps)
+  {
+    vtkWarningMacro("LinearSteps " << steps << " is out of [1, 4096]: " << clamped << " is used.");
+  }
+  if (clamped != this->LinearSteps)
+  {
+    this->LinearSteps = clamped;
+    this->Modified();
+  }
+}
+
+void vtkOpenGLReliefImpostorMapper::SetBinarySteps(int steps)
+{
+  const int clamped = std::min(std::max(steps, 0), 32);
+  if (clamped != steps)
+  {
+    vtkWarningMacro("BinarySteps " << steps << " is out of [0, 32]: " << clamped << " is used.");
+  }
+  if (clamped != this->BinarySteps)
+  {
+    this->BinarySteps = clamped;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefImpostorMapper::ComputeBounds()
+{
+  vtkPolyData* mesh = this->GetInput();
+  double bounds[6];
+  if (!mesh || mesh->GetNumberOfCells() == 0)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return;
+  }
+  mesh->GetBounds(bounds);
+  vtkReliefImpostorFilter::PadBounds(bounds, this->ImpostorFilter->GetPadding(), this->Bounds);
+}
+
+void vtkOpenGLReliefImpostorMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
+{
+  vtkPolyData* mesh = this->GetInput();
+  if (mesh && !this->Static && this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (mesh && mesh->GetNumberOfCells() == 0)
+  {
+    if (!this->WarnedEmptyMesh)
+    {
+      this->WarnedEmptyMesh = true;
+      vtkWarningMacro("The impostor's mesh is empty: nothing is drawn. Connect a surface mesh "
+                      "with polygons to port 0.");
+    }
+    this->DrawingImpostor = false;
+    return;
+  }
+  this->WarnedEmptyMesh = false;
+  this->Superclass::RenderPiece(ren, actor);
+}
+
+bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)
+{
+  this->ImpostorFilter->SetInputData(this->CurrentInput);
+  this->ImpostorFilter->Update();
+  vtkImageData* depths = this->ImpostorFilter->GetDepthOutput();
+  const bool captured = depths->GetNumberOfPoints() > 0;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  const int active = ImpostorSearchMethod(this->SearchMethod);
+  if (active != this->SearchMethod && this->SearchMethod != Mapper::AUTOMATIC &&
+    !this->WarnedSearchMethod)
+  {
+    this->WarnedSearchMethod = true;
+    vtkWarningMacro(<< Mapper::GetSearchMethodAsString(this->SearchMethod)
+                    << " cannot search an impostor: its cones and radii hold for rays that "
+                       "descend into a field, and the views behind the object are searched "
+                       "along rays that rise. MaximumMipmap, exact, searches instead.");
+  }
+  if (active != this->ActiveSearchMethod)
+  {
+    this->ActiveSearchMethod = active;
+    this->ShaderOptionsTime.Modified();
+  }
+  if (captured &&
+    (this->UploadedCaptureTime < depths->GetMTime() || this->UploadedWindow != window ||
+      this->UploadedSearchKind != this->GetActiveSearch().GetAccelerationKind()))
+  {
+    const int views = this->Views;
+    this->UploadedCaptureTime = 0;
+    if (!this->UploadTextures(window))
+    {
+      this->ReleaseTextures(window);
+      return this->WarnFallback(
+        "its textures could not be made on this OpenGL (see the message above)");
+    }
+    this->UploadedCaptureTime = depths->GetMTime();
+    this->UploadedWindow = window;
+    this->UploadedSearchKind = this->GetActiveSearch().GetAccelerationKind();
+    if (views != this->Views)
+    {
+      this->ShaderOptionsTime.Modified();
+    }
+    this->MakeBox();
+  }
+  if (!captured)
+  {
+    return this->WarnFallback("the capture failed (see vtkReliefImpostorFilter's error)");
+  }
+  this->WarnedFallback = false;
+  return true;
+}
+
+bool vtkOpenGLReliefImpostorMapper::WarnFallback(const char* why)
+{
+  if (!this->WarnedFallback)
+  {
+    this->WarnedFallback = true;
+    vtkWarningMacro("The impostor cannot be drawn: " << why << ". The mesh itself is drawn "
+                                                         "instead.");
+  }
+  return false;
+}
+
+bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window)
+{
+  vtkImageData* depths = this->ImpostorFilter->GetDepthOutput();
+  vtkImageData* colours = this->ImpostorFilter->GetColourOutput();
+  const int depthSize = depths->GetDimensions()[0];
+  const int colourSize = colours->GetDimensions()[0];
+  const int views = depths->GetDimensions()[2];
+  const bool pyramid = this->GetActiveSearch().NeedsAcceleration();
+  // the pyramid's atlas is half again as wide as the depths
+  const int widest = std::max(colourSize, pyramid ? depthSize + depthSize / 2 + 1 : depthSize);
+  const int limit = vtkTextureObject::GetMaximumTextureSize(window);
+  if (widest > limit)
+  {
+    vtkErrorMacro("The capture's textures (" << widest << " texels wide) exceed this OpenGL's "
+                                                "largest, "
+                                             << limit
+                                             << ": lower the impostor filter's DepthResolution "
+                                                "or ColourResolution.");
+    return false;
+  }
+
+  // depths: 16 bits, empty columns apart from every surface (EncodeDepth)
+  vtkDataArray* depthValues = depths->GetPointData()->GetScalars();
+  std::vector<unsigned short> codes(static_cast<size_t>(depthValues->GetNumberOfTuples()));
+  for (size_t k = 0; k < codes.size(); ++k)
+  {
+    codes[k] = vtkReliefImpostorFilter::EncodeDepth(
+      static_cast<float>(depthValues->GetComponent(static_cast<vtkIdType>(k), 0)));
+  }
+  auto prepare = [window](vtkReliefArrayTexture* texture, int filter) {
+    texture->SetContext(window);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->SetMinificationFilter(filter);
+    texture->SetMagnificationFilter(
+      filter == vtkTextureObject::Nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear);
+  };
+  prepare(this->DepthTexture, vtkTextureObject::Linear);
+  if (!this->DepthTexture->Create2DArrayFromRaw(depthSize, depthSize, views, GL_R16, GL_RED,
+        GL_UNSIGNED_SHORT, 2, codes.data(), false))
+  {
+    vtkErrorMacro("The impostor's depth texture could not be made.");
+    return false;
+  }
+
+  // the search's pyramid of each view, from the depths as the GPU holds them
+  if (pyramid)
+  {
+    std::vector<unsigned short> atlases;
+    int atlasSize[2] = { 0, 0 };
+    const vtkIdType texels = LayerTexels(depths);
+    for (int view = 0; view < views; ++view)
+    {
+      vtkNew<vtkImageData> field;
+      field->SetDimensions(depthSize, depthSize, 1);
+      vtkNew<vtkFloatArray> values;
+      values->SetNumberOfTuples(texels);
+      for (vtkIdType k = 0; k < texels; ++k)
+      {
+        values->SetValue(
+          k, vtkReliefImpostorFilter::DecodeDepth(codes[static_cast<size_t>(view * texels + k)]));
+      }
+      field->GetPointData()->SetScalars(values);
+      vtkNew<vtkMaximumMipmapFilter> builder;
+      builder->SetInputData(field);
+      builder->Update();
+      vtkImageData* atlas = builder->GetOutput();
+      atlasSize[0] = atlas->GetDimensions()[0];
+      atlasSize[1] = atlas->GetDimensions()[1];
+      vtkDataArray* nodes = atlas->GetPointData()->GetScalars();
+      for (vtkIdType k = 0; k < nodes->GetNumberOfTuples(); ++k)
+      {
+        // minima of 16-bit depths: exact as 16 bits again
+        atlases.push_back(static_cast<unsigned short>(
+          std::lround(std::min(std::max(nodes->GetComponent(k, 0), 0.0), 1.0) * 65535.0)));
+      }
+    }
+    prepare(this->PyramidTexture, vtkTextureObject::Nearest);
+    if (!this->PyramidTexture->Create2DArrayFromRaw(atlasSize[0], atlasSize[1], views, GL_R16,
+          GL_RED, GL_UNSIGNED_SHORT, 2, atlases.data(), false))
+    {
+      vtkErrorMacro("The impostor's pyramid texture could not be made.");
+      return false;
+    }
+  }
+  else
+  {
+    this->PyramidTexture->ReleaseGraphicsResources(window);
+  }
+
+  // colours premultiplied by their coverage, so that mipmaps and filtering at outlines
+  // blend only what was seen; normals as signed bytes, zero where nothing was
+  vtkDataArray* rgba = colours->GetPointData()->GetScalars();
+  vtkDataArray* normals = colours->GetPointData()->GetArray("Normals");
+  const size_t colourTexels = static_cast<size_t>(rgba->GetNumberOfTuples());
+  std::vector<unsigned char> premultiplied(4 * colourTexels);
+  std::vector<signed char> packedNormals(4 * colourTexels, 0);
+  for (size_t k = 0; k < colourTexels; ++k)
+  {
+    const vtkIdType id = static_cast<vtkIdType>(k);
+    const double alpha = rgba->GetComponent(id, 3) / 255.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      premultiplied[4 * k + c] =
+        static_cast<unsigned char>(std::lround(rgba->GetComponent(id, c) * alpha));
+    }
+    premultiplied[4 * k + 3] = static_cast<unsigned char>(rgba->GetComponent(id, 3));
+    double normal[3] = { 0.0, 0.0, 0.0 };
+    if (normals && alpha > 0.0)
+    {
+      normals->GetTuple(id, normal);
+    }
+    const double length = vtkMath::Norm(normal);
+    for (int c = 0; c < 3 && length > 0.0 && std::isfinite(length); ++c)
+    {
+      packedNormals[4 * k + c] = static_cast<signed char>(std::lround(127.0 * normal[c] / length));
+    }
+  }
+  prepare(this->ColourTexture, vtkTextureObject::LinearMipmapLinear);
+  prepare(this->NormalTexture, vtkTextureObject::LinearMipmapLinear);
+  if (!this->ColourTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8,
+        GL_RGBA, GL_UNSIGNED_BYTE, 4, premultiplied.data(), true) ||
+    !this->NormalTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8_SNORM,
+      GL_RGBA, GL_BYTE, 4, packedNormals.data(), true))
+  {
+    vtkErrorMacro("The impostor's colour textures could not be made.");
+    return false;
+  }
+
+  this->Views = views;
+  this->DepthSize = depthSize;
+  this->ColourSize = colourSize;
+  this->ImpostorFilter->GetBox(this->CaptureBox);
+  for (int view = 0; view < views; ++view)
+  {
+    this->ImpostorFilter->GetViewProjection(view, this->Projections[view]);
+  }
+  return true;
+}
+
+double vtkOpenGLReliefImpostorMapper::GetDepthRatio(int view)
+{
+  const double* box = this->CaptureBox;
+  const int axis = view / 2; // views +x, -x, +y, -y, +z, -z; one view: +z
+  const int along = this->Views == 1 ? 2 : axis;
+  const double depth = box[2 * along + 1] - box[2 * along];
+  const double face = std::sqrt((box[2 * ((along + 1) % 3) + 1] - box[2 * ((along + 1) % 3)]) *
+    (box[2 * ((along + 2) % 3) + 1] - box[2 * ((along + 2) % 3)]));
+  return depth / std::max(face, 1e-300);
+}
+
+void vtkOpenGLReliefImpostorMapper::MakeBox()
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(this->CaptureBox);
+  cube->Update();
+  // its points and outward-wound faces only: no normals or texture coordinates for VTK
+  // to read, the impostor's shading is its own
+  vtkNew<vtkPolyData> box;
+  box->SetPoints(cube->GetOutput()->GetPoints());
+  box->SetPolys(cube->GetOutput()->GetPolys());
+  this->Box->ShallowCopy(box);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLReliefImpostorMapper::ShouldWriteDepth(vtkRenderer* ren, vtkActor* actor)
+{
+  if (!this->ConservativeDepth)
+  {
+    return true;
+  }
+  // a camera inside the box sees none of its front faces
+  double bounds[6];
+  actor->GetBounds(bounds);
+  const double* eye = ren->GetActiveCamera()->GetPosition();
+  bool inside = true;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    inside = inside && eye[axis] >= bounds[2 * axis] && eye[axis] <= bounds[2 * axis + 1];
+  }
+  if (inside && !this->WarnedCameraInside)
+  {
+    this->WarnedCameraInside = true;
+    vtkWarningMacro("The camera is inside the impostor's box, where its front faces cannot "
+                    "be drawn: ConservativeDepth is set aside while it is, and true depth "
+                    "written.");
+  }
+  this->WarnedCameraInside = this->WarnedCameraInside && inside;
+  return inside;
+}
+
+void vtkOpenGLReliefImpostorMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
+{
+  const bool impostor = this->UpdateImpostor(ren);
+  const bool writeDepth = impostor && this->ShouldWriteDepth(ren, actor);
+  if (impostor != this->DrawingImpostor || writeDepth != this->WritingDepth)
+  {
+    this->DrawingImpostor = impostor;
+    this->WritingDepth = writeDepth;
+    this->ShaderOptionsTime.Modified();
+  }
+  if (impostor)
+  {
+    // the box carries no colours: the captured ones replace the mesh's scalars, which VTK
+    // would otherwise map and read by the box's primitives
+    this->CurrentInput = this->Box;
+    this->SavedScalarVisibility = this->ScalarVisibility;
+    this->ScalarVisibility = false;
+  }
+  this->Superclass::RenderPieceStart(ren, actor);
+  if (!impostor)
+  {
+    return;
+  }
+  // true depth: the box's back faces, so that every ray through it has a fragment, from
+  // anywhere; conservative depth: its front faces
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderer*>(ren)->GetState();
+  this->SavedCullFace = state->GetEnumState(GL_CULL_FACE);
+  GLint mode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &mode);
+  this->SavedCullFaceMode = static_cast<unsigned int>(mode);
+  state->vtkglEnable(GL_CULL_FACE);
+  const bool mirrored = actor->GetMatrix()->Determinant() < 0.0;
+  state->vtkglCullFace(this->WritingDepth != mirrored ? GL_FRONT : GL_BACK);
+  this->DepthTexture->Activate();
+  this->ColourTexture->Activate();
+  this->NormalTexture->Activate();
+  if (this->PyramidTexture->GetHandle())
+  {
+    this->PyramidTexture->Activate();
+  }
+}
+
+void vtkOpenGLReliefImpostorMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->DrawingImpostor)
+  {
+    this->DepthTexture->Deactivate();
+    this->ColourTexture->Deactivate();
+    this->NormalTexture->Deactivate();
+    if (this->PyramidTexture->GetHandle())
+    {
+      this->PyramidTexture->Deactivate();
+    }
+    vtkOpenGLState* state = static_cast<vtkOpenGLRenderer*>(ren)->GetState();
+    state->vtkglCullFace(this->SavedCullFaceMode);
+    state->SetEnumState(GL_CULL_FACE, this->SavedCullFace);
+  }
+  this->Superclass::RenderPieceFinish(ren, actor);
+  if (this->DrawingImpostor)
+  {
+    this->ScalarVisibility = this->SavedScalarVisibility;
+  }
+}
+
+bool vtkOpenGLReliefImpostorMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) ||
+    cellBO.ShaderSourceTime < this->ShaderOptionsTime;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLReliefImpostorMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  if (!this->DrawingImpostor || this->LastBoundBO != &this->Primitives[PrimitiveTris] ||
+    actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  {
+    this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+    return;
+  }
+  using Rewrites = vtkReliefShaderRewrites;
+  const int lightComplexity = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity;
+  std::string vertex = shaders[vtkShader::Vertex]->GetSource();
+  std::string fragment = shaders[vtkShader::Fragment]->GetSource();
+  bool found = Rewrites::InsertAfter(vertex, Rewrites::VertexDeclarations,
+    "out vec4 reliefImpostorVC;\n//VTK::Relief::CameraDec");
+  found = Rewrites::InsertBefore(
+            vertex, Rewrites::VertexEnd, "reliefImpostorVC = MCVCMatrix * vertexMC;") && found;
+
+  std::string declarations = vtkReliefImpostorFragmentDec;
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Common", vtkReliefCommon);
+  vtkShaderProgram::Substitute(
+    declarations, "//VTK::Relief::Search", std::string(vtkReliefSearch) + vtkReliefGridSearch);
+  vtkShaderProgram::Substitute(declarations, "//VTK::Relief::Frame", vtkReliefImpostorFrame);
+  found = Rewrites::InsertAfter(fragment, Rewrites::FragmentSystem,
+            "#extension GL_ARB_texture_gather : enable\n") && found;
+  found = Rewrites::InsertAfter(fragment, Rewrites::FragmentDeclarations,
+            this->GetActiveSearch().GetShaderDefine() + "#define RELIEF_IMPOSTOR_VIEWS " +
+              std::to_string(this->Views) + "\n" + declarations) && found;
+  found = Rewrites::InsertBefore(
+            fragment, Rewrites::FragmentStart, vtkReliefImpostorFragmentImpl) && found;
+  // the actor's colours multiply the captured colour
+  found = Rewrites::InsertAfter(fragment, Rewrites::FragmentColour,
+            "  ambientColor *= reliefHitColour.rgb;\n"
+            "  diffuseColor *= reliefHitColour.rgb;\n") && found;
+  if (this->WritingDepth)
+  {
+    found = Rewrites::Replace(fragment, Rewrites::FragmentDepth, "gl_FragDepth = reliefFragDepth;") &&
+      found;
+  }
+  if (lightComplexity > 0)
+  {
+    found = Rewrites::InsertAfter(fragment, Rewrites::FragmentNormal,
+              "  normalVCVSOutput = reliefLitNormalVC;\n"
+              "  vertexVC = vec4(reliefHitVC, 1.0);\n") && found;
+  }
+  found = Rewrites::InsertBefore(fragment, Rewrites::FragmentOutput,
+            "if (reliefDisplayMode == 1)\n"
+            "  {\n"
+            "    gl_FragData[0] = vec4(min(float(reliefHit.samples), 255.0) / 255.0, 0.0, 0.0, 1.0);\n"
+            "  }") && found;
+  if (!found && !this->WarnedFallback)
+  {
+    this->WarnedFallback = true;
+    vtkWarningMacro("This VTK's shader templates lack tags the impostor's code goes at "
+                    "(vtkReliefShaderRewrites follows VTK 9.1 and 9.2): it may be drawn "
+                    "wrong.");
+  }
+  shaders[vtkShader::Vertex]->SetSource(vertex);
+  shaders[vtkShader::Fragment]->SetSource(fragment);
+
+  this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+
+  vertex = shaders[vtkShader::Vertex]->GetSource();
+  Rewrites::DeclareModelToView(vertex, "//VTK::Relief::CameraDec");
+  shaders[vtkShader::Vertex]->SetSource(vertex);
+}
+
+void vtkOpenGLReliefImpostorMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!this->DrawingImpostor || !program->IsUniformUsed("reliefImpostorLow"))
+  {
+    return;
+  }
+  program->SetUniformi("reliefImpostorDepths", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("reliefImpostorColours", this->ColourTexture->GetTextureUnit());
+  program->SetUniformi("reliefImpostorNormals", this->NormalTexture->GetTextureUnit());
+  if (this->PyramidTexture->GetHandle())
+  {
+    program->SetUniformi("reliefImpostorPyramids", this->PyramidTexture->GetTextureUnit());
+  }
+  const float size[2] = { static_cast<float>(this->DepthSize),
+    static_cast<float>(this->DepthSize) };
+  program->SetUniform2f("reliefTextureSize", size);
+  const vtkReliefSearchMethod& method = this->GetActiveSearch();
+  if (method.SetUniforms)
+  {
+    const int sizes[2] = { this->DepthSize, this->DepthSize };
+    method.SetUniforms(program, sizes);
+  }
+  // column-major, as GLSL reads its matrices
+  std::vector<float> projections(16 * static_cast<size_t>(this->Views));
+  for (int view = 0; view < this->Views; ++view)
+  {
+    for (int row = 0; row < 4; ++row)
+    {
+      for (int column = 0; column < 4; ++column)
+      {
+        projections[16 * view + 4 * column + row] =
+          static_cast<float>(this->Projections[view][4 * row + column]);
+      }
+    }
+  }
+  program->SetUniformMatrix4x4v("reliefImpostorProjections", this->Views, projections.data());
+  float ratios[6];
+  for (int view = 0; view < this->Views; ++view)
+  {
+    ratios[view] = static_cast<float>(this->GetDepthRatio(view));
+  }
+  program->SetUniform1fv("reliefImpostorDepthRatios", this->Views, ratios);
+  const float low[3] = { static_cast<float>(this->CaptureBox[0]),
+    static_cast<float>(this->CaptureBox[2]), static_cast<float>(this->CaptureBox[4]) };
+  const float high[3] = { static_cast<float>(this->CaptureBox[1]),
+    static_cast<float>(this->CaptureBox[3]), static_cast<float>(this->CaptureBox[5]) };
+  program->SetUniform3f("reliefImpostorLow", low);
+  program->SetUniform3f("reliefImpostorHigh", high);
+  program->SetUniformi("reliefLinearSteps", this->LinearSteps);
+  program->SetUniformi("reliefBinarySteps", this->BinarySteps);
+  program->SetUniformi("reliefDisplayMode", this->DisplayMode);
+}
+
+void vtkOpenGLReliefImpostorMapper::SetCameraShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, actor);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!this->DrawingImpostor || !program->IsUniformUsed("reliefImpostorVCMC"))
+  {
+    return;
+  }
+  vtkMatrix4x4* worldToViewKey;
+  vtkMatrix3x3* normalKey;
+  vtkMatrix4x4* viewToDisplayKey;
+  vtkMatrix4x4* worldToDisplayKey;
+  vtkCamera* camera = ren->GetActiveCamera();
+  static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(
+    ren, worldToViewKey, normalKey, viewToDisplayKey, worldToDisplayKey);
+  program->SetUniformMatrix("reliefVCDCMatrix", viewToDisplayKey);
+
+  // model to view in model units, free of the position VBO's shift and scale
+  vtkNew<vtkMatrix4x4> worldToView;
+  FromKeyMatrix(worldToViewKey, worldToView);
+  vtkNew<vtkMatrix4x4> modelToView;
+  vtkMatrix4x4::Multiply4x4(worldToView, actor->GetMatrix(), modelToView);
+  vtkNew<vtkMatrix4x4> viewToModel;
+  vtkMatrix4x4::Invert(modelToView, viewToModel);
+  SetMatrixUniform(program, "reliefImpostorMCVC", modelToView);
+  SetMatrixUniform(program, "reliefImpostorVCMC", viewToModel);
+  vtkNew<vtkMatrix3x3> normals;
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      // the inverse transpose of the directions' matrix
+      normals->SetElement(row, column, viewToModel->GetElement(column, row));
+    }
+  }
+  vtkNew<vtkMatrix3x3> normalsUploaded; // vtkShaderProgram uploads rows as columns
+  vtkMatrix3x3::Transpose(normals, normalsUploaded);
+  program->SetUniformMatrix("reliefImpostorNormalMatrix", normalsUploaded);
+
+  // the near plane, and a pixel's size for the colours' level
+  double range[2];
+  camera->GetClippingRange(range);
+  program->SetUniformf("reliefNearVC", static_cast<float>(range[0]));
+  int width = 1;
+  int height = 1;
+  ren->GetTiledSize(&width, &height);
+  const double spread = camera->GetParallelProjection()
+    ? 2.0 * camera->GetParallelScale() / std::max(height, 1)
+    : 2.0 * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) /
+      std::max(height, 1);
+  program->SetUniformf("reliefPixelSpread", static_cast<float>(spread));
+  // model units per view unit: the actor's scale
+  const double scale = std::cbrt(std::abs(modelToView->Determinant()));
+  double meanSide = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    meanSide += (this->CaptureBox[2 * axis + 1] - this->CaptureBox[2 * axis]) / 3.0;
+  }
+  program->SetUniformf("reliefColourTexelsPerUnit",
+    static_cast<float>(this->ColourSize / std::max(meanSide * scale, 1e-30)));
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOpenGLReliefImpostorMapper::GetTextureBytes()
+{
+  return this->DepthTexture->GetBytes() + this->PyramidTexture->GetBytes() +
+    this->ColourTexture->GetBytes() + this->NormalTexture->GetBytes();
+}
+
+void vtkOpenGLReliefImpostorMapper::ReleaseTextures(vtkWindow* window)
+{
+  this->DepthTexture->ReleaseGraphicsResources(window);
+  this->PyramidTexture->ReleaseGraphicsResources(window);
+  this->ColourTexture->ReleaseGraphicsResources(window);
+  this->NormalTexture->ReleaseGraphicsResources(window);
+  this->UploadedCaptureTime = 0;
+  this->UploadedWindow = nullptr;
+  this->UploadedSearchKind = -1;
+}
+
+void vtkOpenGLReliefImpostorMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->ReleaseTextures(window);
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+void vtkOpenGLReliefImpostorMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SearchMethod: " << Mapper::GetSearchMethodAsString(this->SearchMethod) << "\n";
+  os << indent << "ActiveSearchMethod: " << Mapper::GetSearchMethodAsString(this->ActiveSearchMethod)
+     << "\n";
+  os << indent << "LinearSteps: " << this->LinearSteps << "\n";
+  os << indent << "BinarySteps: " << this->BinarySteps << "\n";
+  os << indent << "ConservativeDepth: " << this->ConservativeDepth << "\n";
+  os << indent << "DisplayMode: " << (this->DisplayMode == SAMPLE_COUNT ? "SampleCount" : "Shaded")
+     << "\n";
+  os << indent << "DrawingImpostor: " << this->DrawingImpostor << "\n";
+  os << indent << "Views: " << this->Views << "\n";
+  os << indent << "TextureBytes: " << this->GetTextureBytes() << "\n";
+  os << indent << "ImpostorFilter:\n";
+  this->ImpostorFilter->PrintSelf(os, indent.GetNextIndent());
+}

@@ -1,0 +1,191 @@
+/**
+ * @class   vtkOpenGLReliefImpostorMapper
+ * @brief   draws a mesh as a relief impostor: height fields searched inside its box
+ *
+ * A relief impostor (Baboud and Decoret 2006, s4) replaces a whole object by the height
+ * fields vtkReliefImpostorFilter captures around it: the mapper draws the twelve
+ * triangles of the object's box, and each pixel follows its view ray through the box into
+ * every view, searched by one of the relief search methods, to the first point every
+ * view's field holds inside the object (vtkReliefImpostorFrame.glsl). That point is lit
+ * with the captured normal and colour of the view it lies on, by the renderer's lights
+ * and the actor's property as any surface is (its colours multiply the captured colour),
+ * and its true depth is written, so the impostor interpenetrates the rest of the scene
+ * as the mesh would. A frame costs the pixels the object covers, not its triangles: a
+ * field of a thousand copies of a detailed part draws at the cost of its textures.
+ *
+ * Port 0 takes the mesh. The mapper captures it with its own vtkReliefImpostorFilter
+ * (GetImpostorFilter() to set views, projection, resolutions, a colour texture), once per
+ * change of the mesh or of those settings; the mapper's bounds are the capture's box.
+ * Many actors may share one mapper, each with its own matrix and property: the textures
+ * are made and uploaded once.
+ *
+ * Where the impostor cannot be made (the capture failed: see its error; or its textures
+ * exceed this OpenGL's limits) the mesh itself is drawn, with one warning, so no data is
+ * lost from view.
+ */
+#ifndef vtkOpenGLReliefImpostorMapper_h
+#define vtkOpenGLReliefImpostorMapper_h
+
+#include "vtkNew.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkReliefRenderingModule.h" // For export macro
+
+class vtkOpenGLRenderWindow;
+class vtkPolyData;
+class vtkReliefArrayTexture;
+class vtkReliefImpostorFilter;
+class vtkReliefSearchMethod;
+
+class VTKRELIEFRENDERING_EXPORT vtkOpenGLReliefImpostorMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkOpenGLReliefImpostorMapper* New();
+  vtkTypeMacro(vtkOpenGLReliefImpostorMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The filter that captures the mesh, to configure it (views, projection, resolutions).
+  vtkReliefImpostorFilter* GetImpostorFilter();
+
+  ///@{
+  /**
+   * How each view's field is searched, one of vtkOpenGLReliefMapper::SearchMethods:
+   * - Automatic (default) and MaximumMipmap: the exact pyramid search (Tevs et al. 2008),
+   *   a pyramid per view built with the capture; about log n steps a view.
+   * - ExactDDA: every cell the ray crosses, exact.
+   * - Linear, LinearBinary, Secant: LinearSteps fixed steps through the box, then
+   *   BinarySteps of refinement; features thinner than a step are missed.
+   * ConeStep and SafetyRadius hold cones and radii for rays that descend into a field;
+   * behind the object the views' rays rise, so they search with MaximumMipmap, with a
+   * warning. Changing the method rebuilds the shader once.
+   */
+  void SetSearchMethod(int method);
+  vtkGetMacro(SearchMethod, int);
+  ///@}
+
+  /// The method the last render searched with (SearchMethod, or MaximumMipmap instead).
+  vtkGetMacro(ActiveSearchMethod, int);
+
+  ///@{
+  /**
+   * Steps of the fixed-step searches through the whole box (1 to 4096, default 64) and of
+   * their refinement (0 to 32, default 8). Values out of range are clamped, with a warning.
+   */
+  void SetLinearSteps(int steps);
+  vtkGetMacro(LinearSteps, int);
+  void SetBinarySteps(int steps);
+  vtkGetMacro(BinarySteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Off (default): each pixel writes the depth of its hit, so other actors interpenetrate
+   * the impostor exactly; the box's back faces are drawn, and a camera inside the box
+   * still sees the object. On: the box's front faces are drawn and their depth kept, a
+   * conservative depth (s4.4) the GPU may test before shading; what lies inside the box
+   * but in front of the object is hidden by it. A camera inside the box cannot see the
+   * front faces: that render writes true depth instead, with a warning.
+   */
+  vtkSetMacro(ConservativeDepth, bool);
+  vtkGetMacro(ConservativeDepth, bool);
+  vtkBooleanMacro(ConservativeDepth, bool);
+  ///@}
+
+  enum DisplayModes
+  {
+    SHADED = 0,
+    SAMPLE_COUNT = 1
+  };
+
+  ///@{
+  /**
+   * Shaded (default), or SampleCount: each covered pixel's red channel is
+   * min(255, height samples its ray took) / 255, green and blue 0.
+   */
+  vtkSetClampMacro(DisplayMode, int, SHADED, SAMPLE_COUNT);
+  vtkGetMacro(DisplayMode, int);
+  void SetDisplayModeToShaded() { this->SetDisplayMode(SHADED); }
+  void SetDisplayModeToSampleCount() { this->SetDisplayMode(SAMPLE_COUNT); }
+  ///@}
+
+  /// Whether the last render drew the impostor (false: the mesh itself, or nothing).
+  vtkGetMacro(DrawingImpostor, bool);
+
+  /**
+   * GPU bytes of the impostor's textures as last uploaded (depths, the search's pyramids,
+   * colours with their mipmaps, normals); 0 before the first render and after release.
+   */
+  vtkIdType GetTextureBytes();
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+  void RenderPiece(vtkRenderer* ren, vtkActor* actor) override;
+  /// The capture's box (the mesh's bounds, padded as the filter pads them).
+  void ComputeBounds() override;
+
+protected:
+  vtkOpenGLReliefImpostorMapper();
+  ~vtkOpenGLReliefImpostorMapper() override;
+
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+
+  /// Captures the mesh and uploads the textures where they are out of date; false when
+  /// the impostor cannot be drawn (said once).
+  bool UpdateImpostor(vtkRenderer* ren);
+  /// The capture's textures on the GPU of `window`; false where one cannot be made.
+  bool UploadTextures(vtkOpenGLRenderWindow* window);
+  void ReleaseTextures(vtkWindow* window);
+  /// Says once why the mesh is drawn instead of the impostor; false.
+  bool WarnFallback(const char* why);
+  /// The box's depth along view `view` over the size of its face.
+  double GetDepthRatio(int view);
+  /// The box's twelve triangles, drawn in place of the mesh.
+  void MakeBox();
+  /// Whether this render draws the box's back faces and writes true depth.
+  bool ShouldWriteDepth(vtkRenderer* ren, vtkActor* actor);
+  const vtkReliefSearchMethod& GetActiveSearch();
+  /// The method `method` searches the impostor with.
+  static int ImpostorSearchMethod(int method);
+
+  int SearchMethod = 7; // vtkOpenGLReliefMapper::AUTOMATIC
+  int ActiveSearchMethod = 6; // vtkOpenGLReliefMapper::MAXIMUM_MIPMAP
+  int LinearSteps = 64;
+  int BinarySteps = 8;
+  bool ConservativeDepth = false;
+  int DisplayMode = SHADED;
+
+  vtkNew<vtkReliefImpostorFilter> ImpostorFilter;
+  vtkNew<vtkPolyData> Box; // drawn in place of the mesh
+  vtkNew<vtkReliefArrayTexture> DepthTexture;
+  vtkNew<vtkReliefArrayTexture> PyramidTexture;
+  vtkNew<vtkReliefArrayTexture> ColourTexture;
+  vtkNew<vtkReliefArrayTexture> NormalTexture;
+  vtkMTimeType UploadedCaptureTime = 0; // the capture the textures hold
+  vtkWindow* UploadedWindow = nullptr;   // where they are, compared by address only
+  int UploadedSearchKind = -1;          // the pyramid uploaded, or none (-1)
+  int Views = 0;                         // of the capture drawn
+  int DepthSize = 0;
+  int ColourSize = 0;
+  double CaptureBox[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  double Projections[6][16] = {};       // row major, model to (u w, v w, depth w, w)
+  bool DrawingImpostor = false;
+  bool WritingDepth = true;             // this render: back faces and true depth
+  bool SavedCullFace = false;
+  vtkTypeBool SavedScalarVisibility = true; // the user's, while the box is drawn
+  unsigned int SavedCullFaceMode = 0;
+  bool WarnedFallback = false;
+  bool WarnedEmptyMesh = false;
+  bool WarnedSearchMethod = false;
+  bool WarnedCameraInside = false;
+  vtkTimeStamp ShaderOptionsTime; // the search method, views or drawing mode changed
+
+private:
+  vtkOpenGLReliefImpostorMapper(const vtkOpenGLReliefImpostorMapper&) = delete;
+  void operator=(const vtkOpenGLReliefImpostorMapper&) = delete;
+};
+
+#endif
