@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 vtkStandardNewMacro(vtkReliefImpostorFilter);
@@ -96,8 +97,9 @@ std::vector<Projected> ProjectMesh(const Mesh& mesh, const glm::dmat4& projectio
   return projected;
 }
 
-// The rows [first, last] a triangle covers, clamped to the raster (last < first: none).
-void RowsOf(const Projected& triangle, int size, int& first, int& last)
+// The rows [first, last] whose centres lie within `margin` of a triangle's rows, clamped
+// to the raster (last < first: none).
+void RowsOf(const Projected& triangle, int size, double margin, int& first, int& last)
 {
   double low = triangle.Corner[0].y;
   double high = low;
@@ -107,8 +109,8 @@ void RowsOf(const Projected& triangle, int size, int& first, int& last)
     high = std::max(high, triangle.Corner[c].y);
   }
   // clamped before the cast: no int overflow from far or non-finite corners
-  first = static_cast<int>(std::max(0.0, std::ceil(low - 1e-9)));
-  last = static_cast<int>(std::min(size - 1.0, std::floor(high + 1e-9)));
+  first = static_cast<int>(std::max(0.0, std::ceil(low - margin - 1e-9)));
+  last = static_cast<int>(std::min(size - 1.0, std::floor(high + margin + 1e-9)));
 }
 
 // Rasterizes triangle t into rows [rowBegin, rowEnd), keeping the nearest.
@@ -121,7 +123,7 @@ void RasterizeTriangle(const Projected& triangle, vtkIdType t, int rowBegin, int
   const double area = (p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y);
   int first = 0;
   int last = -1;
-  RowsOf(triangle, raster.Size, first, last);
+  RowsOf(triangle, raster.Size, 0.0, first, last);
   first = std::max(first, rowBegin);
   last = std::min(last, rowEnd - 1);
   const double left = std::min({ p0.x, p1.x, p2.x });
@@ -160,8 +162,96 @@ void RasterizeTriangle(const Projected& triangle, vtkIdType t, int rowBegin, int
   }
 }
 
-// The view's nearest surface at each texel centre of a size x size raster.
-Raster Rasterize(const Mesh& mesh, const glm::dmat4& projection, int size)
+// The least depth of segment a-b (texel space, depth in z) within the texel square
+// centred on `centre`, or +infinity where it does not pass through it (Liang and Barsky's
+// clipping; depth is affine along a projected line).
+double SegmentDepthInTexel(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec2& centre)
+{
+  double enter = 0.0;
+  double leave = 1.0;
+  const double run[2] = { b.x - a.x, b.y - a.y };
+  const double start[2] = { a.x - centre.x, a.y - centre.y };
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    if (run[axis] == 0.0)
+    {
+      if (std::abs(start[axis]) > 0.5)
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+      continue;
+    }
+    const double first = (-0.5 - start[axis]) / run[axis];
+    const double second = (0.5 - start[axis]) / run[axis];
+    enter = std::max(enter, std::min(first, second));
+    leave = std::min(leave, std::max(first, second));
+  }
+  if (!(enter <= leave))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return std::min(a.z + enter * (b.z - a.z), a.z + leave * (b.z - a.z));
+}
+
+// Gives texels that no triangle covers at their centre, but that triangle t reaches into,
+// the least depth of the triangle within the texel's square: seen edge on, a sheet falls
+// between texel centres and would leave its view empty, and the impostor, which keeps
+// only what every view holds, would lose it. The least depth lies where the triangle's
+// edges cross the square, or at a corner of the square the triangle covers.
+void TouchTriangle(const Projected& triangle, vtkIdType t, int rowBegin, int rowEnd,
+  const std::vector<vtkIdType>& covered, Raster& raster)
+{
+  int first = 0;
+  int last = -1;
+  RowsOf(triangle, raster.Size, 0.5, first, last);
+  first = std::max(first, rowBegin);
+  last = std::min(last, rowEnd - 1);
+  const std::array<glm::dvec3, 3>& p = triangle.Corner;
+  const double left = std::min({ p[0].x, p[1].x, p[2].x });
+  const double right = std::max({ p[0].x, p[1].x, p[2].x });
+  const int columnFirst = static_cast<int>(std::max(0.0, std::ceil(left - 0.5 - 1e-9)));
+  const int columnLast =
+    static_cast<int>(std::min(raster.Size - 1.0, std::floor(right + 0.5 + 1e-9)));
+  const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+  for (int j = first; j <= last; ++j)
+  {
+    for (int i = columnFirst; i <= columnLast; ++i)
+    {
+      const size_t texel = static_cast<size_t>(j) * raster.Size + i;
+      if (covered[texel] >= 0)
+      {
+        continue;
+      }
+      const glm::dvec2 centre(i, j);
+      double depth = std::numeric_limits<double>::infinity();
+      for (int c = 0; c < 3; ++c)
+      {
+        depth = std::min(depth, SegmentDepthInTexel(p[c], p[(c + 1) % 3], centre));
+      }
+      for (int corner = 0; triangle.Seen && corner < 4; ++corner)
+      {
+        const double x = i + (corner & 1 ? 0.5 : -0.5) - p[0].x;
+        const double y = j + (corner & 2 ? 0.5 : -0.5) - p[0].y;
+        const double l1 = (x * (p[2].y - p[0].y) - (p[2].x - p[0].x) * y) / area;
+        const double l2 = ((p[1].x - p[0].x) * y - x * (p[1].y - p[0].y)) / area;
+        if (l1 >= 0.0 && l2 >= 0.0 && l1 + l2 <= 1.0)
+        {
+          depth = std::min(depth, (1.0 - l1 - l2) * p[0].z + l1 * p[1].z + l2 * p[2].z);
+        }
+      }
+      if (depth < raster.Depth[texel])
+      {
+        raster.Depth[texel] = depth;
+        raster.Triangle[texel] = t;
+        raster.Weights[texel] = glm::dvec2(1.0 / 3.0);
+      }
+    }
+  }
+}
+
+// The view's nearest surface at each texel centre of a size x size raster; with `touch`,
+// also in the texels triangles only reach into (TouchTriangle).
+Raster Rasterize(const Mesh& mesh, const glm::dmat4& projection, int size, bool touch)
 {
   Raster raster;
   raster.Size = size;
@@ -176,9 +266,10 @@ Raster Rasterize(const Mesh& mesh, const glm::dmat4& projection, int size)
   {
     int first = 0;
     int last = -1;
-    if (projected[t].Seen)
+    // edge-on triangles touch texels without covering any centre
+    if (projected[t].Seen || touch)
     {
-      RowsOf(projected[t], size, first, last);
+      RowsOf(projected[t], size, touch ? 0.5 : 0.0, first, last);
     }
     for (int band = first / BandRows; first <= last && band <= last / BandRows; ++band)
     {
@@ -192,10 +283,29 @@ Raster Rasterize(const Mesh& mesh, const glm::dmat4& projection, int size)
       const int rowEnd = std::min(size, rowBegin + BandRows);
       for (vtkIdType t : binned[band])
       {
-        RasterizeTriangle(projected[t], t, rowBegin, rowEnd, raster);
+        if (projected[t].Seen)
+        {
+          RasterizeTriangle(projected[t], t, rowBegin, rowEnd, raster);
+        }
       }
     }
   });
+  if (touch)
+  {
+    // after every centre is settled, so that only texels no centre hit are filled
+    const std::vector<vtkIdType> covered = raster.Triangle;
+    vtkSMPTools::For(0, bands, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType band = begin; band < end; ++band)
+      {
+        const int rowBegin = static_cast<int>(band) * BandRows;
+        const int rowEnd = std::min(size, rowBegin + BandRows);
+        for (vtkIdType t : binned[band])
+        {
+          TouchTriangle(projected[t], t, rowBegin, rowEnd, covered, raster);
+        }
+      }
+    });
+  }
   return raster;
 }
 
@@ -727,7 +837,7 @@ int vtkReliefImpostorFilter::RequestData(
   for (int view = 0; view < views && !this->AbortExecute; ++view)
   {
     const glm::dmat4& projection = this->Internal->Projections[view];
-    fields.push_back(Rasterize(mesh, projection, this->DepthResolution));
+    fields.push_back(Rasterize(mesh, projection, this->DepthResolution, true));
     const Raster& field = fields.back();
     const size_t slice = field.Depth.size();
     for (size_t texel = 0; texel < slice; ++texel)
@@ -739,7 +849,7 @@ int vtkReliefImpostorFilter::RequestData(
     }
     this->UpdateProgress((view + 0.5) / (views + 1.0));
 
-    const Raster seen = Rasterize(mesh, projection, this->ColourResolution);
+    const Raster seen = Rasterize(mesh, projection, this->ColourResolution, false);
     const size_t colourSlice = seen.Depth.size();
     vtkSMPTools::For(0, static_cast<vtkIdType>(colourSlice), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType texel = begin; texel < end; ++texel)

@@ -153,9 +153,12 @@ void vtkOpenGLReliefImpostorMapper::ComputeBounds()
   double bounds[6];
   if (!mesh || mesh->GetNumberOfCells() == 0)
   {
+    // asked before any render: an empty actor is culled before it draws
+    this->WarnEmptyMesh();
     vtkMath::UninitializeBounds(this->Bounds);
     return;
   }
+  this->WarnedEmptyMesh = false;
   mesh->GetBounds(bounds);
   vtkReliefImpostorFilter::PadBounds(bounds, this->ImpostorFilter->GetPadding(), this->Bounds);
 }
@@ -169,17 +172,22 @@ void vtkOpenGLReliefImpostorMapper::RenderPiece(vtkRenderer* ren, vtkActor* acto
   }
   if (mesh && mesh->GetNumberOfCells() == 0)
   {
-    if (!this->WarnedEmptyMesh)
-    {
-      this->WarnedEmptyMesh = true;
-      vtkWarningMacro("The impostor's mesh is empty: nothing is drawn. Connect a surface mesh "
-                      "with polygons to port 0.");
-    }
+    this->WarnEmptyMesh();
     this->DrawingImpostor = false;
     return;
   }
   this->WarnedEmptyMesh = false;
   this->Superclass::RenderPiece(ren, actor);
+}
+
+void vtkOpenGLReliefImpostorMapper::WarnEmptyMesh()
+{
+  if (!this->WarnedEmptyMesh)
+  {
+    this->WarnedEmptyMesh = true;
+    vtkWarningMacro("The impostor's mesh is empty: nothing is drawn. Connect a surface mesh "
+                    "with polygons to port 0.");
+  }
 }
 
 bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)

@@ -139,6 +139,8 @@ protected:
   /// The capture's textures on the GPU of `window`; false where one cannot be made.
   bool UploadTextures(vtkOpenGLRenderWindow* window);
   void ReleaseTextures(vtkWindow* window);
+  /// Says once that the mesh is empty.
+  void WarnEmptyMesh();
   /// Says once why the mesh is drawn instead of the impostor; false.
   bool WarnFallback(const char* why);
   /// The box's depth along view `view` over the size of its face.

@@ -5,6 +5,7 @@
 // perspective: the outline (silhouette error against the box's, as elsewhere against the
 // coarse polygons'), the depth of the pixels both cover, and the colour. The window holds
 // the oblique view.
+#include "ReliefLiveGLObjects.h"
 #include "ReliefMetrics.h"
 #include "ReliefScene.h"
 
@@ -13,6 +14,7 @@
 #include "vtkCubeSource.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefImpostorMapper.h"
+#include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRegressionTestImage.h"
@@ -99,6 +101,31 @@ int TestReliefImpostor(int argc, char* argv[])
   if (!impostorMapper->GetDrawingImpostor())
   {
     std::cerr << "The impostor was not drawn.\n";
+    right = false;
+  }
+
+  // leaks: changing the search (its pyramid) and the capture (all textures) many times
+  // leaves as many GL textures alive as one round; releasing frees the impostor's
+  lineup.Show(impostor);
+  window->Render();
+  const int textures = ReliefLiveGLObjects::Textures();
+  for (int round = 0; round < 4; ++round)
+  {
+    impostorMapper->SetSearchMethod(vtkOpenGLReliefMapper::EXACT_DDA);
+    window->Render();
+    impostorMapper->SetSearchMethod(vtkOpenGLReliefMapper::AUTOMATIC);
+    impostorMapper->GetImpostorFilter()->SetDepthResolution(round % 2 ? 256 : 192);
+    window->Render();
+  }
+  const int leaked = ReliefLiveGLObjects::Textures() - textures;
+  const vtkIdType bytes = impostorMapper->GetTextureBytes();
+  impostorMapper->ReleaseGraphicsResources(window);
+  const int released = textures - ReliefLiveGLObjects::Textures();
+  std::cout << "GL textures: " << leaked << " leaked, " << released << " released (" << bytes
+            << " bytes)\n";
+  if (leaked != 0 || released != 4 || impostorMapper->GetTextureBytes() != 0)
+  {
+    std::cerr << "The impostor's GL textures are not all released.\n";
     right = false;
   }
 

@@ -209,24 +209,32 @@ TEST(ReliefImpostorFilter, SphereReadsBackOnItsSurface)
     filter->GetDepthOutput()->GetDimensions(dimensions);
     EXPECT_EQ(dimensions[0], 96);
     EXPECT_EQ(dimensions[2], 6);
-    // the polygonal sphere lies between its inscribed and circumscribed radii
+    // the polygonal sphere lies between its inscribed and circumscribed radii; texels the
+    // sphere only reaches into, along its outline, hold its least depth within them: a
+    // point of their ray at most half a texel's diagonal from the surface
     const double inscribed = radius * std::cos(M_PI / 96) * std::cos(M_PI / 96);
     double box[6];
     filter->GetBox(box);
     const double side = box[1] - box[0];
+    const double reach = 0.71 * side / 96.0 * (projection == vtkReliefImpostorFilter::ORTHOGRAPHIC ? 1.0 : 2.0);
     for (int view = 0; view < 6; ++view)
     {
       const std::vector<glm::dvec3> hits = Hits(filter.GetPointer(), view);
+      int onSurface = 0;
       for (const glm::dvec3& hit : hits)
       {
         ASSERT_GE(glm::length(hit), inscribed - 1e-6);
-        ASSERT_LE(glm::length(hit), radius + 1e-6);
+        ASSERT_LE(glm::length(hit), radius + reach);
+        onSurface += glm::length(hit) <= radius + 1e-6 ? 1 : 0;
       }
       if (projection == vtkReliefImpostorFilter::ORTHOGRAPHIC)
       {
-        // the disc's share of the face
+        // the disc's share of the face, at the texel centres and along the outline
+        const double exact = static_cast<double>(onSurface) / (96.0 * 96.0);
+        EXPECT_NEAR(exact, M_PI * radius * radius / (side * side), 0.01);
         const double covered = static_cast<double>(hits.size()) / (96.0 * 96.0);
-        EXPECT_NEAR(covered, M_PI * radius * radius / (side * side), 0.01);
+        EXPECT_GT(covered, exact);
+        EXPECT_LT(covered, M_PI * (radius + reach) * (radius + reach) / (side * side) + 0.01);
       }
     }
     EXPECT_LT(filter->GetUnseenSurfaceFraction(), 0.005);

@@ -282,3 +282,34 @@ TEST(ReliefImpostorFrame, ExactSearchesAgreeOnEveryRay)
   EXPECT_LT(samples[1], samples[0]);
   CurrentImpostor = nullptr;
 }
+
+TEST(ReliefImpostorFrame, ASheetSeenEdgeOnIsKept)
+{
+  // a square with no thickness, in a box of a hundredth of its side: the side views see
+  // it edge on, between their texel rows, and must still hold it (TouchTriangle)
+  vtkNew<vtkPlaneSource> sheet;
+  sheet->SetResolution(4, 4);
+  sheet->Update();
+  vtkNew<vtkReliefImpostorFilter> filter;
+  filter->SetInputData(sheet->GetOutput());
+  filter->SetPadding(0.0);
+  filter->SetDepthResolution(128);
+  filter->SetColourResolution(8);
+  filter->Update();
+  const ImpostorViews views = ViewsOf(filter);
+  CurrentImpostor = &views;
+  for (const SearchMethod& method : ExactSearches)
+  {
+    ImpostorSearch = method.Function;
+    int missed = 0;
+    for (int k = 0; k < 100; ++k)
+    {
+      const vec3 target(-0.4f + 0.8f * (k % 10) / 9.0f, -0.4f + 0.8f * (k / 10) / 9.0f, 0.0f);
+      const vec3 direction = normalize(vec3(0.3f, 0.2f, -1.0f));
+      const Traced traced = Trace(filter, target - 3.0f * direction, direction);
+      missed += traced.Hit && length(traced.Point - target) < 0.02f ? 0 : 1;
+    }
+    EXPECT_EQ(missed, 0) << method.Name << ", of 100 rays";
+  }
+  CurrentImpostor = nullptr;
+}

@@ -29,9 +29,11 @@
 // touch. The filter pads the box by far more, so no surface lies that close to a face.
 #define RELIEF_IMPOSTOR_INSET 1e-4f
 
-// A point the search finds on a field counts as inside it within this depth (the 16-bit
-// depth's step): the search's root and the test of the point may round apart.
-#define RELIEF_IMPOSTOR_DEPTH_TOLERANCE 1.5e-5f
+// A point counts as inside a view's field within this depth, two steps of the 16-bit
+// depths: the search's root and the test of the point may round apart, and a sheet of no
+// thickness is stored rounded to the nearest step by each of two opposite views, which
+// may then leave a step between them, holding nothing.
+#define RELIEF_IMPOSTOR_DEPTH_TOLERANCE 3.1e-5f
 
 // Searches of one ray, at most: each moves the point on, and views that agree need none.
 #define RELIEF_IMPOSTOR_MAX_SEARCHES 24
