@@ -136,6 +136,11 @@ int main(int argc, char* argv[])
       "grooves on a coarse cylinder: the tangent frame (left) keeps the polygons' outline, the "
       "quadric frame (right) lets the grooves notch it",
       [](vtkRenderWindow* w) { ReliefPathScene::ShowCurvedPathFeatures(w, 800, 400, 0.06); } },
+    { "impostor_beside_mesh",
+      "a 37k-triangle mesh (left) and its relief impostor, six height fields in its box (right)",
+      [](vtkRenderWindow* w) { ReliefScene::ShowImpostorBesideMesh(w, 800, 400); } },
+    { "impostor_field", "400 impostors of that mesh sharing one mapper and its textures",
+      [](vtkRenderWindow* w) { ReliefScene::ShowImpostorField(w, 800, 400, 400); } },
     { "sample_count",
       "height samples per pixel, Automatic (the default), the view ray's search (blue 0, red 20)",
       [](vtkRenderWindow* w) {

@@ -26,6 +26,7 @@
 #include "vtkReliefImpostorFilter.h"
 #include "vtkReliefSearchMethod.h"
 #include "vtkReliefShaderRewrites.h"
+#include "vtkScalarsToColors.h"
 #include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnsignedCharArray.h"
@@ -39,6 +40,7 @@
 #include "vtkReliefSearch.h"
 
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <vector>
 
@@ -190,9 +192,56 @@ void vtkOpenGLReliefImpostorMapper::WarnEmptyMesh()
   }
 }
 
+vtkPolyData* vtkOpenGLReliefImpostorMapper::ColouredMesh(vtkPolyData* mesh)
+{
+  // VTK's mapper colours a mesh's points through this mapper's lookup table, range and
+  // array selection: the capture takes those very colours (RGBA, used as they are)
+  int cellFlag = 0;
+  vtkAbstractArray* scalars = vtkAbstractMapper::GetAbstractScalars(mesh, this->ScalarMode,
+    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  const bool mapped = this->ScalarVisibility && scalars && cellFlag == 0;
+  // without colours of its own, white (the actor's colour multiplies it), unless the
+  // capture reads a colour texture
+  const bool textured = this->ImpostorFilter->GetNumberOfInputConnections(1) > 0;
+  vtkScalarsToColors* table = mapped ? this->GetLookupTable() : nullptr;
+  if (table && !this->UseLookupTableScalarRange)
+  {
+    table->SetRange(this->ScalarRange); // as vtkMapper::MapScalars does; unchanged: no change
+  }
+  std::ostringstream key;
+  key << mesh << ' ' << mesh->GetMTime() << ' ' << scalars << ' ' << mapped << ' ' << textured
+      << ' ' << (table ? table->GetMTime() : 0) << ' ' << this->ColorMode << ' '
+      << this->ArrayComponent;
+  if (key.str() == this->ColouredKey)
+  {
+    return this->Coloured;
+  }
+  this->ColouredKey = key.str();
+  this->Coloured->ShallowCopy(mesh);
+  vtkSmartPointer<vtkUnsignedCharArray> colours;
+  if (mapped)
+  {
+    colours.TakeReference(table->MapScalars(scalars, this->ColorMode, this->ArrayComponent));
+  }
+  else if (!textured)
+  {
+    colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(4);
+    colours->SetNumberOfTuples(mesh->GetNumberOfPoints());
+    colours->Fill(255);
+  }
+  // the copy's point data is its own: the mesh keeps its active scalars
+  if (colours)
+  {
+    colours->SetName("ImpostorColours");
+  }
+  this->Coloured->GetPointData()->SetScalars(colours);
+  return this->Coloured;
+}
+
 bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)
 {
-  this->ImpostorFilter->SetInputData(this->CurrentInput);
+  this->ImpostorFilter->SetInputData(this->ColouredMesh(this->CurrentInput));
   this->ImpostorFilter->Update();
   vtkImageData* depths = this->ImpostorFilter->GetDepthOutput();
   const bool captured = depths->GetNumberOfPoints() > 0;
@@ -214,7 +263,7 @@ bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)
   }
   if (captured &&
     (this->UploadedCaptureTime < depths->GetMTime() || this->UploadedWindow != window ||
-      this->UploadedSearchKind != this->GetActiveSearch().GetAccelerationKind()))
+      this->UploadedPyramid != this->GetActiveSearch().NeedsAcceleration()))
   {
     const int views = this->Views;
     this->UploadedCaptureTime = 0;
@@ -226,7 +275,7 @@ bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)
     }
     this->UploadedCaptureTime = depths->GetMTime();
     this->UploadedWindow = window;
-    this->UploadedSearchKind = this->GetActiveSearch().GetAccelerationKind();
+    this->UploadedPyramid = this->GetActiveSearch().NeedsAcceleration();
     if (views != this->Views)
     {
       this->ShaderOptionsTime.Modified();
@@ -565,9 +614,9 @@ void vtkOpenGLReliefImpostorMapper::ReplaceShaderValues(
             "  {\n"
             "    gl_FragData[0] = vec4(min(float(reliefHit.samples), 255.0) / 255.0, 0.0, 0.0, 1.0);\n"
             "  }") && found;
-  if (!found && !this->WarnedFallback)
+  if (!found && !this->WarnedShaderTags)
   {
-    this->WarnedFallback = true;
+    this->WarnedShaderTags = true;
     vtkWarningMacro("This VTK's shader templates lack tags the impostor's code goes at "
                     "(vtkReliefShaderRewrites follows VTK 9.1 and 9.2): it may be drawn "
                     "wrong.");
@@ -716,7 +765,7 @@ void vtkOpenGLReliefImpostorMapper::ReleaseTextures(vtkWindow* window)
   this->NormalTexture->ReleaseGraphicsResources(window);
   this->UploadedCaptureTime = 0;
   this->UploadedWindow = nullptr;
-  this->UploadedSearchKind = -1;
+  this->UploadedPyramid = false;
 }
 
 void vtkOpenGLReliefImpostorMapper::ReleaseGraphicsResources(vtkWindow* window)

@@ -30,6 +30,8 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkReliefRenderingModule.h" // For export macro
 
+#include <string> // For ColouredKey
+
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkReliefArrayTexture;
@@ -133,6 +135,12 @@ protected:
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
 
+  /**
+   * The mesh with the colours VTK's mapper would give its points (this mapper's lookup
+   * table, scalar range and array), white where it has none and the capture reads no
+   * colour texture; made again only when one of those changes.
+   */
+  vtkPolyData* ColouredMesh(vtkPolyData* mesh);
   /// Captures the mesh and uploads the textures where they are out of date; false when
   /// the impostor cannot be drawn (said once).
   bool UpdateImpostor(vtkRenderer* ren);
@@ -162,13 +170,15 @@ protected:
 
   vtkNew<vtkReliefImpostorFilter> ImpostorFilter;
   vtkNew<vtkPolyData> Box; // drawn in place of the mesh
+  vtkNew<vtkPolyData> Coloured; // the mesh as captured: ColouredMesh()
+  std::string ColouredKey;      // what Coloured was made from
   vtkNew<vtkReliefArrayTexture> DepthTexture;
   vtkNew<vtkReliefArrayTexture> PyramidTexture;
   vtkNew<vtkReliefArrayTexture> ColourTexture;
   vtkNew<vtkReliefArrayTexture> NormalTexture;
   vtkMTimeType UploadedCaptureTime = 0; // the capture the textures hold
   vtkWindow* UploadedWindow = nullptr;   // where they are, compared by address only
-  int UploadedSearchKind = -1;          // the pyramid uploaded, or none (-1)
+  bool UploadedPyramid = false;         // the search's pyramid is among them
   int Views = 0;                         // of the capture drawn
   int DepthSize = 0;
   int ColourSize = 0;
@@ -183,6 +193,7 @@ protected:
   bool WarnedEmptyMesh = false;
   bool WarnedSearchMethod = false;
   bool WarnedCameraInside = false;
+  bool WarnedShaderTags = false;
   vtkTimeStamp ShaderOptionsTime; // the search method, views or drawing mode changed
 
 private:

@@ -1,9 +1,9 @@
 """Runs ReliefBench --quick on the accuracy study (one search method), the stability
-sweeps, the quadric, derivative, shading and automatic studies, and checks what it
-writes: the results table (every expected row, every figure a finite number, the truth
-error-free, the exact search closer to the truth than the dense mesh and the mesh than
-the bare polygons), a table per sweep, the quadric and derivative studies' rows, the
-automatic study's table and checks, and every chart."""
+sweeps, the quadric, derivative, shading, automatic and impostor studies, and checks
+what it writes: the results table (every expected row, every figure a finite number, the
+truth error-free, the exact search closer to the truth than the dense mesh and the mesh
+than the bare polygons), a table per sweep, the quadric and derivative studies' rows, the
+automatic study's table and checks, the impostor study's rows, and every chart."""
 import argparse
 import math
 import os
@@ -19,7 +19,8 @@ CHARTS = ["accuracy_time.png", "accuracy_samples.png", "sweep_angle.png", "sweep
           "quadric_silhouette_error.png", "derivative_accuracy.png", "derivative_frame_error.png",
           "derivative_seam_colour_crease.png", "derivative_seam_depth_crease.png",
           "derivative_seam_colour_view.png", "derivative_seam_depth_view.png",
-          "automatic_samples.png", "automatic_wrong.png"]
+          "automatic_samples.png", "automatic_wrong.png", "impostor_cost.png",
+          "impostor_error.png"]
 QUADRIC_FRAMES = ["flat", "quadric, approximate distance", "quadric, exact distance"]
 DERIVATIVE_FRAMES = ["tangent", "derivative"]
 SEAM_FRAMES = ["tangent, smooth normals", "tangent, split normals", "derivative, ComputeNormals",
@@ -163,6 +164,23 @@ def check_shading(text):
             figure(cell)
 
 
+def check_impostors(text):
+    """The impostor study: a row per instance count (quick: 1 and 4), each figure finite,
+    the impostor drawn (its silhouette error below the boxes', samples taken)."""
+    if "## Relief impostors" not in text:
+        fail("no impostor section")
+    section = text.split("## Relief impostors", 1)[1].split("### Cost", 1)[0]
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")]
+            for line in section.splitlines() if line.startswith("| a quarter")]
+    if [row[1] for row in rows] != ["1", "4"]:
+        fail("the impostor table lacks its instance rows: %s" % rows)
+    for row in rows:
+        for cell in row[3:5] + row[6:9] + row[10:]:
+            figure(cell.rstrip("x%"))
+        if not figure(row[6]) < 1.0 or not figure(row[10]) > 0.0:
+            fail("the impostor was not drawn: %s" % row)
+
+
 def check_automatic(text):
     """The automatic study's table for the steps map: a row per setting, each cell
     "wrong % / samples" at each angle, Automatic's rows among them, and its checks."""
@@ -226,7 +244,7 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing",
+               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing,impostors",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -259,6 +277,7 @@ def main():
     check_quadric_picture(os.path.join(arguments.output, "images", "quadric_outlines.png"))
     check_shading(run.stdout)
     check_automatic(text)
+    check_impostors(text)
     check_sharing(run.stdout)
     print("bench smoke run: results and charts well formed")
 

@@ -11,6 +11,7 @@
 // speed against its accuracy (ReliefAccuracy.h).
 #include "ReliefAccuracy.h"
 #include "ReliefAutomaticStudy.h"
+#include "ReliefImpostorStudy.h"
 #include "ReliefPathStudy.h"
 #include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
@@ -92,7 +93,7 @@ bool KnownSections(const std::string& list)
     if (section != "plain" && section != "methods" && section != "filters" &&
       section != "accuracy" && section != "sweeps" && section != "quadric" &&
       section != "derivative" && section != "sharing" && section != "shading" &&
-      section != "automatic" && section != "paths")
+      section != "automatic" && section != "paths" && section != "impostors")
     {
       return false;
     }
@@ -391,7 +392,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
                    "                      filters, accuracy, sweeps, quadric, derivative,\n"
-                   "                      sharing, shading, automatic, paths)\n"
+                   "                      sharing, shading, automatic, paths, impostors)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
@@ -400,7 +401,8 @@ int main(int argc, char* argv[])
                    "depth scale sweep, the quadric frame's silhouettes on curved shapes, and\n"
                    "the derivative frame against the tangent frame, with its seams at creases,\n"
                    "shading against supersampled geometry, the Automatic search against every\n"
-                   "fixed setting across the view angle, and many actors on one height map.\n"
+                   "fixed setting across the view angle, many actors on one height map,\n"
+                   "path features against geometry, and relief impostors against their mesh.\n"
                    "--report writes the timing tables, --results the accuracy study, the\n"
                    "sweeps, the quadric, derivative, shading and automatic studies with their\n"
                    "charts (PNG, in images/ beside FILE.md), each with machine and versions.\n"
@@ -616,6 +618,21 @@ int main(int argc, char* argv[])
   const std::string pathSection =
     wanted("paths") ? ReliefPathStudy::Study(pathOptions) : "(not run)\n";
 
+  ReliefImpostorStudy::Options impostorOptions;
+  impostorOptions.ImageDirectory = accuracy.ImageDirectory;
+  if (quick)
+  {
+    impostorOptions.Width = 160;
+    impostorOptions.Height = 120;
+    impostorOptions.MeshResolution = 48;
+    impostorOptions.Instances = { 1, 4 };
+    impostorOptions.ScreenShares = { 0.25 };
+    impostorOptions.DepthResolutions = { 64 };
+    impostorOptions.Frames = 1;
+  }
+  const std::string impostorSection =
+    wanted("impostors") ? ReliefImpostorStudy::Study(impostorOptions) : "(not run)\n";
+
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
   if (!wanted("plain"))
@@ -698,6 +715,7 @@ int main(int argc, char* argv[])
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
             << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection << "\n"
             << shadingSection << "\n" << automaticSection << "\n" << pathSection << "\n"
+            << impostorSection << "\n"
             << sharingContext
             << sharingTable;
 
@@ -728,6 +746,7 @@ int main(int argc, char* argv[])
       { "Shading true to the pixel's footprint", &shadingSection },
       { "Automatic quality: the search each fragment needs", &automaticSection },
       { "Path features against geometry and height maps", &pathSection },
+      { "Relief impostors against the mesh they replace", &impostorSection },
     };
     for (const auto& section : sections)
     {

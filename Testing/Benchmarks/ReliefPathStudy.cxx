@@ -678,10 +678,10 @@ std::string Study(const Options& options)
     }
     ReliefMetrics::WriteMosaic({ { &differences[0], &differences[1], &differences[2] } },
       options.ImageDirectory + "/path_features_difference.png");
-    out << "\n![error against cost](path_features_error_cost.png)\n\n"
+    out << "\n![error against cost](images/path_features_error_cost.png)\n\n"
         << "Middle view, top: the geometry supersampled, path features with and without\n"
         << "antialiasing; bottom: the height maps, the geometry at one sample a pixel.\n\n"
-        << "![middle view](path_features_middle.png)\n";
+        << "![middle view](images/path_features_middle.png)\n";
   }
   return out.str();
 }

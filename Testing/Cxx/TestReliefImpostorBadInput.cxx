@@ -1,7 +1,7 @@
 // vtkOpenGLReliefImpostorMapper's bad input (issue 19 item 5), each case drawn three
 // times: one clear message, said once, and sane pixels: an empty mesh (nothing drawn), a
-// flat mesh (its box thickened, the impostor drawn), a mesh without colour (white),
-// invalid frustum parameters and resolutions (the mesh drawn instead), a search method
+// flat mesh (its box thickened, the impostor drawn), a mesh without colour (in the
+// actor's colour, as VTK's mapper draws it, and nothing said), invalid frustum parameters and resolutions (the mesh drawn instead), a search method
 // that cannot search an impostor, out-of-range steps, and a camera inside the box (seen
 // from inside; with ConservativeDepth, true depth instead, said once).
 #include "ReliefEventRecorder.h"
@@ -128,7 +128,8 @@ int TestReliefImpostorBadInput(int, char*[])
         mapper->GetImpostorFilter()->SetPadding(0.0); // a box of zero thickness
       },
       "flat along z", drawn },
-    { "NoColour", sphere, nothing, "has no colour",
+    // as VTK's mapper draws it: in the actor's colour (white), and nothing said
+    { "NoColour", sphere, nothing, nullptr,
       [](const Outcome& o) { return o.Drawn && o.Covered > 1500 && o.Brightness > 0.4; } },
     { "ApexDistance",
       object,

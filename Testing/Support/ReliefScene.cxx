@@ -54,6 +54,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 
 namespace ReliefScene
 {
@@ -270,6 +271,71 @@ vtkSmartPointer<vtkActor> ImpostorActor(vtkPolyData* mesh)
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   return actor;
+}
+
+double AddField(vtkRenderer* renderer, vtkMapper* mapper, int count, double spacing)
+{
+  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+  const double half = 0.5 * (side - 1) * spacing;
+  std::mt19937 generator(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < count; ++k)
+  {
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->SetPosition((k % side) * spacing - half, (k / side) * spacing - half, 0.0);
+    actor->RotateZ(360.0 * unit(generator));
+    actor->GetProperty()->SetColor(0.6 + 0.4 * unit(generator), 0.6 + 0.4 * unit(generator),
+      0.6 + 0.4 * unit(generator));
+    renderer->AddActor(actor);
+  }
+  return half + 0.5 * spacing;
+}
+
+void ViewField(vtkRenderer* renderer, double half, double distance)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, distance * half, 0.0); // LitRenderer's light over its shoulder
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->Elevation(40.0);
+  camera->OrthogonalizeViewUp();
+  camera->SetViewAngle(30.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void ShowImpostorBesideMesh(vtkRenderWindow* window, int width, int height)
+{
+  vtkSmartPointer<vtkPolyData> object = ImpostorObject(96);
+  auto left = LitRenderer(window, width, height);
+  left->SetViewport(0.0, 0.0, 0.5, 1.0);
+  left->AddActor(MeshActor(object));
+  vtkNew<vtkRenderer> right;
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->SetBackground(left->GetBackground());
+  right->AutomaticLightCreationOff();
+  right->SetLightCollection(left->GetLights());
+  right->SetActiveCamera(left->GetActiveCamera());
+  right->AddActor(ImpostorActor(object));
+  window->AddRenderer(right);
+  vtkCamera* camera = left->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 4.0, 0.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->Elevation(35.0);
+  camera->Azimuth(30.0);
+  camera->OrthogonalizeViewUp();
+  camera->SetViewAngle(30.0);
+  left->ResetCameraClippingRange(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+}
+
+void ShowImpostorField(vtkRenderWindow* window, int width, int height, int count)
+{
+  auto renderer = LitRenderer(window, width, height);
+  vtkNew<vtkOpenGLReliefImpostorMapper> mapper;
+  mapper->SetInputData(ImpostorObject(96));
+  const double half = AddField(renderer, mapper, count, 2.5);
+  ViewField(renderer, half, 1.9);
 }
 
 vtkSmartPointer<vtkPolyData> Cylinder(int resolution, double sweep)

@@ -172,6 +172,23 @@ vtkSmartPointer<vtkPolyData> ImpostorObject(int resolution);
 vtkSmartPointer<vtkActor> MeshActor(vtkPolyData* mesh);
 vtkSmartPointer<vtkActor> ImpostorActor(vtkPolyData* mesh);
 
+/**
+ * `count` actors sharing `mapper` on a square grid `spacing` apart in the plane z = 0,
+ * each turned about z by its own angle and tinted its own colour (the same each call).
+ * Returns the grid's half width.
+ */
+double AddField(vtkRenderer* renderer, vtkMapper* mapper, int count, double spacing);
+
+/// The camera looking down at 40 degrees on the middle of a field of half width `half`,
+/// from `distance` half widths away.
+void ViewField(vtkRenderer* renderer, double half, double distance);
+
+/// ImpostorObject drawn by VTK's stock mapper (left) and as a relief impostor (right).
+void ShowImpostorBesideMesh(vtkRenderWindow* window, int width, int height);
+
+/// A field of `count` impostors of ImpostorObject sharing one mapper.
+void ShowImpostorField(vtkRenderWindow* window, int width, int height, int count);
+
 /// Wall-clock milliseconds of each of `frames` renders after `warmup` renders.
 std::vector<double> FrameMilliseconds(vtkRenderWindow* window, int warmup, int frames);
 
