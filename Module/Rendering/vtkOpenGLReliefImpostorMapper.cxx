@@ -208,6 +208,7 @@ vtkPolyData* vtkOpenGLReliefImpostorMapper::ColouredMesh(vtkPolyData* mesh)
   {
     table->SetRange(this->ScalarRange); // as vtkMapper::MapScalars does; unchanged: no change
   }
+  this->ScalarColours = mapped;
   std::ostringstream key;
   key << mesh << ' ' << mesh->GetMTime() << ' ' << scalars << ' ' << mapped << ' ' << textured
       << ' ' << (table ? table->GetMTime() : 0) << ' ' << this->ColorMode << ' '
@@ -594,10 +595,19 @@ void vtkOpenGLReliefImpostorMapper::ReplaceShaderValues(
               std::to_string(this->Views) + "\n" + declarations) && found;
   found = Rewrites::InsertBefore(
             fragment, Rewrites::FragmentStart, vtkReliefImpostorFragmentImpl) && found;
-  // the actor's colours multiply the captured colour
+  // colours from the mesh's scalars replace the property's, as VTK's mapper colours the
+  // mesh; white or a texture's, they multiply it
   found = Rewrites::InsertAfter(fragment, Rewrites::FragmentColour,
-            "  ambientColor *= reliefHitColour.rgb;\n"
-            "  diffuseColor *= reliefHitColour.rgb;\n") && found;
+            "  if (reliefImpostorScalarColours == 1)\n"
+            "  {\n"
+            "    ambientColor = ambientIntensity * reliefHitColour.rgb;\n"
+            "    diffuseColor = diffuseIntensity * reliefHitColour.rgb;\n"
+            "  }\n"
+            "  else\n"
+            "  {\n"
+            "    ambientColor *= reliefHitColour.rgb;\n"
+            "    diffuseColor *= reliefHitColour.rgb;\n"
+            "  }\n") && found;
   if (this->WritingDepth)
   {
     found = Rewrites::Replace(fragment, Rewrites::FragmentDepth, "gl_FragDepth = reliefFragDepth;") &&
@@ -685,6 +695,7 @@ void vtkOpenGLReliefImpostorMapper::SetMapperShaderParameters(
   program->SetUniformi("reliefLinearSteps", this->LinearSteps);
   program->SetUniformi("reliefBinarySteps", this->BinarySteps);
   program->SetUniformi("reliefDisplayMode", this->DisplayMode);
+  program->SetUniformi("reliefImpostorScalarColours", this->ScalarColours ? 1 : 0);
 }
 
 void vtkOpenGLReliefImpostorMapper::SetCameraShaderParameters(

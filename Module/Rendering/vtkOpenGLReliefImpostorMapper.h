@@ -8,7 +8,8 @@
  * every view, searched by one of the relief search methods, to the first point every
  * view's field holds inside the object (vtkReliefImpostorFrame.glsl). That point is lit
  * with the captured normal and colour of the view it lies on, by the renderer's lights
- * and the actor's property as any surface is (its colours multiply the captured colour),
+ * and the actor's property as VTK's mapper lights the mesh (the mesh's scalars colour it
+ * through this mapper's lookup table; without scalars, the property's colour does),
  * and its true depth is written, so the impostor interpenetrates the rest of the scene
  * as the mesh would. A frame costs the pixels the object covers, not its triangles: a
  * field of a thousand copies of a detailed part draws at the cost of its textures.
@@ -172,6 +173,7 @@ protected:
   vtkNew<vtkPolyData> Box; // drawn in place of the mesh
   vtkNew<vtkPolyData> Coloured; // the mesh as captured: ColouredMesh()
   std::string ColouredKey;      // what Coloured was made from
+  bool ScalarColours = false;   // its colours are the mesh's scalars', not white
   vtkNew<vtkReliefArrayTexture> DepthTexture;
   vtkNew<vtkReliefArrayTexture> PyramidTexture;
   vtkNew<vtkReliefArrayTexture> ColourTexture;

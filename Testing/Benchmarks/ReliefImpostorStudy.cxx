@@ -213,8 +213,8 @@ std::string ReliefImpostorStudy::Study(const Options& options)
     {
       continue; // the screen sweep is of one instance: a field shows whole only far off
     }
-    ReliefChart::Series mesh{ "mesh, " + std::to_string(instances) + " instances" };
-    ReliefChart::Series impostor{ "impostor, " + std::to_string(instances) + " instances" };
+    ReliefChart::Series mesh{ "mesh, one instance" };
+    ReliefChart::Series impostor{ "impostor, one instance" };
     mesh.Line = impostor.Line = true;
     for (double share : options.ScreenShares)
     {

@@ -21,6 +21,7 @@ uniform float reliefColourTexelsPerUnit;       // colour texels per view unit
 uniform int reliefLinearSteps;
 uniform int reliefBinarySteps;
 uniform int reliefDisplayMode;                 // 0 shaded, 1 sample count
+uniform int reliefImpostorScalarColours;       // 1: the colours replace the property's
 in vec4 reliefImpostorVC;
 
 float reliefImpostorLayer = 0.0; // the view the reads below read
