@@ -636,6 +636,15 @@ void vtkOpenGLReliefImpostorMapper::ReplaceShaderValues(
 
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 
+  if (this->WritingDepth)
+  {
+    // the fragment stands at its hit, not on the box: VTK's code that reads its depth
+    // (the shadow-map baker's light depth, depth peeling) reads the hit's
+    fragment = shaders[vtkShader::Fragment]->GetSource();
+    vtkShaderProgram::Substitute(fragment, "gl_FragCoord.z", "reliefFragCoordZ", true);
+    vtkShaderProgram::Substitute(fragment, "gl_FragCoord.w", "reliefFragCoordW", true);
+    shaders[vtkShader::Fragment]->SetSource(fragment);
+  }
   vertex = shaders[vtkShader::Vertex]->GetSource();
   Rewrites::DeclareModelToView(vertex, "//VTK::Relief::CameraDec");
   shaders[vtkShader::Vertex]->SetSource(vertex);

@@ -329,6 +329,46 @@ void ShowImpostorBesideMesh(vtkRenderWindow* window, int width, int height)
   left->ResetCameraClippingRange(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
 }
 
+void ShowImpostorShadows(vtkRenderWindow* window, int width, int height)
+{
+  vtkSmartPointer<vtkPolyData> object = ImpostorObject(96);
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  vtkCamera* camera = nullptr;
+  for (int half = 0; half < 2; ++half)
+  {
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(0.1, 0.12, 0.16);
+    renderer->SetViewport(0.5 * half, 0.0, 0.5 * half + 0.5, 1.0);
+    AddSpotlight(renderer);
+    vtkNew<vtkPlaneSource> floor;
+    floor->SetOrigin(-1.6, -1.6, -0.9);
+    floor->SetPoint1(1.6, -1.6, -0.9);
+    floor->SetPoint2(-1.6, 1.6, -0.9);
+    vtkNew<vtkPolyDataMapper> floorMapper;
+    floorMapper->SetInputConnection(floor->GetOutputPort());
+    vtkNew<vtkActor> floorActor;
+    floorActor->SetMapper(floorMapper);
+    renderer->AddActor(floorActor);
+    renderer->AddActor(half == 0 ? MeshActor(object) : ImpostorActor(object));
+    UseShadowMaps(renderer);
+    if (camera)
+    {
+      renderer->SetActiveCamera(camera);
+    }
+    else
+    {
+      camera = renderer->GetActiveCamera();
+      camera->SetPosition(0.0, -3.5, 2.5);
+      camera->SetFocalPoint(0.0, 0.0, -0.4);
+      camera->SetViewUp(0.0, 0.0, 1.0);
+      renderer->ResetCamera();
+      camera->Zoom(1.3);
+    }
+    window->AddRenderer(renderer);
+  }
+}
+
 void ShowImpostorField(vtkRenderWindow* window, int width, int height, int count)
 {
   auto renderer = LitRenderer(window, width, height);

@@ -186,6 +186,10 @@ void ViewField(vtkRenderer* renderer, double half, double distance);
 /// ImpostorObject drawn by VTK's stock mapper (left) and as a relief impostor (right).
 void ShowImpostorBesideMesh(vtkRenderWindow* window, int width, int height);
 
+/// ImpostorObject over a floor under a spotlight, through the shadow-map passes: drawn
+/// by VTK's stock mapper (left) and as a relief impostor (right).
+void ShowImpostorShadows(vtkRenderWindow* window, int width, int height);
+
 /// A field of `count` impostors of ImpostorObject sharing one mapper.
 void ShowImpostorField(vtkRenderWindow* window, int width, int height, int count);
 

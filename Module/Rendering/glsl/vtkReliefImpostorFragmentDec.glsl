@@ -25,6 +25,10 @@ uniform int reliefImpostorScalarColours;       // 1: the colours replace the pro
 in vec4 reliefImpostorVC;
 
 float reliefImpostorLayer = 0.0; // the view the reads below read
+// gl_FragCoord's depth and 1/w at the hit: VTK's code that reads the fragment's depth
+// (the shadow-map baker, depth peeling) is made to read these (vtkOpenGLReliefImpostorMapper)
+float reliefFragCoordZ = 0.0;
+float reliefFragCoordW = 1.0;
 #define RELIEF_IMPOSTOR_SELECT(view) reliefImpostorLayer = float(view)
 #define RELIEF_IMPOSTOR_PROJECTION(view) reliefImpostorProjections[view]
 #define RELIEF_IMPOSTOR_DEPTH_RATIO(view) reliefImpostorDepthRatios[view]

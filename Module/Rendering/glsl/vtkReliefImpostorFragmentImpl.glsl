@@ -42,3 +42,5 @@
     -reliefLitNormalVC : reliefLitNormalVC;
   vec4 reliefHitDC = reliefVCDCMatrix * vec4(reliefHitVC, 1.0);
   float reliefFragDepth = clamp(0.5 * reliefHitDC.z / reliefHitDC.w + 0.5, 0.0, 1.0);
+  reliefFragCoordZ = reliefFragDepth;
+  reliefFragCoordW = 1.0 / reliefHitDC.w;
