@@ -8,6 +8,7 @@
 #include "vtkCubeSource.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefImpostorMapper.h"
+#include "vtkOpenGLReliefMapper.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -191,6 +192,7 @@ std::string ReliefImpostorStudy::Study(const Options& options)
   constexpr double Spacing = 2.5;
 
   std::vector<Row> instanceRows;
+  std::vector<Row> searchRows;
   std::vector<Row> screenRows;
   std::vector<ReliefChart::Series> costSeries;
   for (int instances : options.Instances)
@@ -274,6 +276,22 @@ std::string ReliefImpostorStudy::Study(const Options& options)
     }
     mappers.Impostor->GetImpostorFilter()->SetDepthResolution(256);
     mappers.Impostor->GetImpostorFilter()->SetColourResolution(512);
+
+    // the searches, in the same view at the defaults
+    const std::pair<const char*, int> searches[] = {
+      { "MaximumMipmap (Automatic, the default)", vtkOpenGLReliefMapper::MAXIMUM_MIPMAP },
+      { "ExactDDA", vtkOpenGLReliefMapper::EXACT_DDA },
+      { "LinearBinary 64+8", vtkOpenGLReliefMapper::LINEAR_BINARY },
+    };
+    for (const auto& search : searches)
+    {
+      mappers.Impostor->SetSearchMethod(search.second);
+      Row row = Measure(window, renderer, mappers, options.Frames, options.Frames);
+      row.Name = search.first;
+      row.Instances = 1;
+      searchRows.push_back(row);
+    }
+    mappers.Impostor->SetSearchMethod(vtkOpenGLReliefMapper::AUTOMATIC);
   }
 
   std::ostringstream out;
@@ -291,8 +309,13 @@ std::string ReliefImpostorStudy::Study(const Options& options)
          "than drawing the boxes), depth as a share of the object's size, colour RMSE over "
          "the window, also against the mesh supersampled 3x3 (what an antialiased camera "
          "sees), beside the mesh's own error against it.\n\n"
+      << "The impostor's textures: " << instanceRows.front().Bytes << " bytes, "
+      << std::setprecision(2) << static_cast<double>(instanceRows.front().Bytes) / meshBytes
+      << " times the mesh's buffers, made once for all instances.\n\n"
       << "### Instances\n\n"
       << Table(instanceRows) << "\n### Cost against screen size\n\n" << Table(screenRows)
+      << "\n### Search methods\n\nOne instance covering a quarter of the window.\n\n"
+      << Table(searchRows)
       << "\n### Error against texture resolution\n\nOne instance covering a quarter of the "
          "window; depth texels per view side, colour twice as many.\n\n"
       << resolutionTable.str();
