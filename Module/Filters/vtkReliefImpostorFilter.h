@@ -39,8 +39,9 @@
  * progress events. A depth texel whose centre no triangle covers, but that a triangle
  * reaches into, takes that triangle's least depth within the texel: a sheet seen edge on,
  * or anything thinner than a texel, falls between centres and would leave the view
- * empty, and an impostor keeps only what every view holds. UnseenSurfaceFraction tells how much of the mesh's area no view saw:
- * the share of 65536 points spread over the surface by area that lie behind every view's
+ * empty, and an impostor keeps only what every view holds. UnseenSurfaceFraction tells
+ * how much of the mesh's area no view saw: the share of 65536 points spread over the
+ * surface by area that lie behind every view's
  * field (deeper than the field at the four texels around them, by more than a thousandth
  * of the depth); it is also the field data value "UnseenSurfaceFraction" of output 0.
  *

@@ -7,12 +7,12 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -148,6 +148,16 @@ void vtkOpenGLReliefImpostorMapper::SetBinarySteps(int steps)
   }
 }
 
+void vtkOpenGLReliefImpostorMapper::SetConservativeDepth(bool conservative)
+{
+  if (conservative != this->ConservativeDepth)
+  {
+    this->ConservativeDepth = conservative;
+    this->WarnedCameraInside = false; // said once a setting: actors sharing the mapper
+    this->Modified();                 // may see the camera inside some boxes, not others
+  }
+}
+
 //------------------------------------------------------------------------------
 void vtkOpenGLReliefImpostorMapper::ComputeBounds()
 {
@@ -203,10 +213,21 @@ vtkPolyData* vtkOpenGLReliefImpostorMapper::ColouredMesh(vtkPolyData* mesh)
   // without colours of its own, white (the actor's colour multiplies it), unless the
   // capture reads a colour texture
   const bool textured = this->ImpostorFilter->GetNumberOfInputConnections(1) > 0;
-  vtkScalarsToColors* table = mapped ? this->GetLookupTable() : nullptr;
-  if (table && !this->UseLookupTableScalarRange)
+  // the table as vtkMapper::MapScalars picks it: the array's own, else this mapper's, built
+  vtkDataArray* values = vtkDataArray::SafeDownCast(scalars);
+  vtkScalarsToColors* table = nullptr;
+  if (mapped)
   {
-    table->SetRange(this->ScalarRange); // as vtkMapper::MapScalars does; unchanged: no change
+    table = this->GetLookupTable();
+    if (values && values->GetLookupTable())
+    {
+      table = values->GetLookupTable();
+    }
+    table->Build();
+    if (!this->UseLookupTableScalarRange)
+    {
+      table->SetRange(this->ScalarRange); // an unchanged range changes nothing
+    }
   }
   this->ScalarColours = mapped;
   std::ostringstream key;
@@ -262,21 +283,31 @@ bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)
     this->ActiveSearchMethod = active;
     this->ShaderOptionsTime.Modified();
   }
+  const bool pyramid = this->GetActiveSearch().NeedsAcceleration();
+  const bool failedBefore = this->FailedCaptureTime == depths->GetMTime() &&
+    this->FailedWindow == window && this->FailedPyramid == pyramid;
+  if (captured && failedBefore)
+  {
+    return false; // said when it failed
+  }
   if (captured &&
     (this->UploadedCaptureTime < depths->GetMTime() || this->UploadedWindow != window ||
-      this->UploadedPyramid != this->GetActiveSearch().NeedsAcceleration()))
+      this->UploadedPyramid != pyramid))
   {
     const int views = this->Views;
     this->UploadedCaptureTime = 0;
     if (!this->UploadTextures(window))
     {
       this->ReleaseTextures(window);
+      this->FailedCaptureTime = depths->GetMTime();
+      this->FailedWindow = window;
+      this->FailedPyramid = pyramid;
       return this->WarnFallback(
         "its textures could not be made on this OpenGL (see the message above)");
     }
     this->UploadedCaptureTime = depths->GetMTime();
     this->UploadedWindow = window;
-    this->UploadedPyramid = this->GetActiveSearch().NeedsAcceleration();
+    this->UploadedPyramid = pyramid;
     if (views != this->Views)
     {
       this->ShaderOptionsTime.Modified();
@@ -343,7 +374,8 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
   if (!this->DepthTexture->Create2DArrayFromRaw(depthSize, depthSize, views, GL_R16, GL_RED,
         GL_UNSIGNED_SHORT, 2, codes.data(), false))
   {
-    vtkErrorMacro("The impostor's depth texture could not be made.");
+    vtkErrorMacro("The impostor's depth texture could not be made: lower the impostor "
+                  "filter's DepthResolution, or free GPU memory.");
     return false;
   }
 
@@ -383,7 +415,8 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
     if (!this->PyramidTexture->Create2DArrayFromRaw(atlasSize[0], atlasSize[1], views, GL_R16,
           GL_RED, GL_UNSIGNED_SHORT, 2, atlases.data(), false))
     {
-      vtkErrorMacro("The impostor's pyramid texture could not be made.");
+      vtkErrorMacro("The impostor's pyramid texture could not be made: lower the impostor "
+                    "filter's DepthResolution, or search with ExactDDA, which needs none.");
       return false;
     }
   }
@@ -427,7 +460,8 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
     !this->NormalTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8_SNORM,
       GL_RGBA, GL_BYTE, 4, packedNormals.data(), true))
   {
-    vtkErrorMacro("The impostor's colour textures could not be made.");
+    vtkErrorMacro("The impostor's colour textures could not be made: lower the impostor "
+                  "filter's ColourResolution, or free GPU memory.");
     return false;
   }
 
@@ -473,14 +507,26 @@ bool vtkOpenGLReliefImpostorMapper::ShouldWriteDepth(vtkRenderer* ren, vtkActor*
   {
     return true;
   }
-  // a camera inside the box sees none of its front faces
+  // a camera inside the box, or whose near plane reaches into it, misses front faces
   double bounds[6];
   actor->GetBounds(bounds);
-  const double* eye = ren->GetActiveCamera()->GetPosition();
-  bool inside = true;
-  for (int axis = 0; axis < 3; ++axis)
+  vtkCamera* camera = ren->GetActiveCamera();
+  double range[2];
+  camera->GetClippingRange(range);
+  const double* eye = camera->GetPosition();
+  const double* along = camera->GetDirectionOfProjection();
+  bool inside = false;
+  for (double reach : { 0.0, range[0] })
   {
-    inside = inside && eye[axis] >= bounds[2 * axis] && eye[axis] <= bounds[2 * axis + 1];
+    bool within = true;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double at = eye[axis] + reach * along[axis];
+      // grown by the near distance: the near plane's corners reach that far sideways
+      within = within && at >= bounds[2 * axis] - range[0] &&
+        at <= bounds[2 * axis + 1] + range[0];
+    }
+    inside = inside || within;
   }
   if (inside && !this->WarnedCameraInside)
   {
@@ -489,13 +535,16 @@ bool vtkOpenGLReliefImpostorMapper::ShouldWriteDepth(vtkRenderer* ren, vtkActor*
                     "be drawn: ConservativeDepth is set aside while it is, and true depth "
                     "written.");
   }
-  this->WarnedCameraInside = this->WarnedCameraInside && inside;
   return inside;
 }
 
 void vtkOpenGLReliefImpostorMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
 {
-  const bool impostor = this->UpdateImpostor(ren);
+  // points, wireframe and edges are the mesh's, as VTK draws them, not the box's
+  vtkProperty* property = actor->GetProperty();
+  const bool surface =
+    property->GetRepresentation() == VTK_SURFACE && !property->GetEdgeVisibility();
+  const bool impostor = surface && this->UpdateImpostor(ren);
   const bool writeDepth = impostor && this->ShouldWriteDepth(ren, actor);
   if (impostor != this->DrawingImpostor || writeDepth != this->WritingDepth)
   {
@@ -610,7 +659,8 @@ void vtkOpenGLReliefImpostorMapper::ReplaceShaderValues(
             "  }\n") && found;
   if (this->WritingDepth)
   {
-    found = Rewrites::Replace(fragment, Rewrites::FragmentDepth, "gl_FragDepth = reliefFragDepth;") &&
+    found = Rewrites::Replace(
+              fragment, Rewrites::FragmentDepth, "gl_FragDepth = reliefFragDepth;") &&
       found;
   }
   if (lightComplexity > 0)
@@ -622,7 +672,8 @@ void vtkOpenGLReliefImpostorMapper::ReplaceShaderValues(
   found = Rewrites::InsertBefore(fragment, Rewrites::FragmentOutput,
             "if (reliefDisplayMode == 1)\n"
             "  {\n"
-            "    gl_FragData[0] = vec4(min(float(reliefHit.samples), 255.0) / 255.0, 0.0, 0.0, 1.0);\n"
+            "    float reliefSamples = min(float(reliefHit.samples), 255.0);\n"
+            "    gl_FragData[0] = vec4(reliefSamples / 255.0, 0.0, 0.0, 1.0);\n"
             "  }") && found;
   if (!found && !this->WarnedShaderTags)
   {
@@ -754,12 +805,13 @@ void vtkOpenGLReliefImpostorMapper::SetCameraShaderParameters(
   int width = 1;
   int height = 1;
   ren->GetTiledSize(&width, &height);
+  const int across = camera->GetUseHorizontalViewAngle() ? width : height;
   const double spread = camera->GetParallelProjection()
     ? 2.0 * camera->GetParallelScale() / std::max(height, 1)
     : 2.0 * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) /
-      std::max(height, 1);
+      std::max(across, 1);
   program->SetUniformf("reliefPixelSpread", static_cast<float>(spread));
-  // model units per view unit: the actor's scale
+  // view units per model unit: the actor's scale
   const double scale = std::cbrt(std::abs(modelToView->Determinant()));
   double meanSide = 0.0;
   for (int axis = 0; axis < 3; ++axis)
@@ -798,7 +850,8 @@ void vtkOpenGLReliefImpostorMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SearchMethod: " << Mapper::GetSearchMethodAsString(this->SearchMethod) << "\n";
-  os << indent << "ActiveSearchMethod: " << Mapper::GetSearchMethodAsString(this->ActiveSearchMethod)
+  os << indent
+     << "ActiveSearchMethod: " << Mapper::GetSearchMethodAsString(this->ActiveSearchMethod)
      << "\n";
   os << indent << "LinearSteps: " << this->LinearSteps << "\n";
   os << indent << "BinarySteps: " << this->BinarySteps << "\n";

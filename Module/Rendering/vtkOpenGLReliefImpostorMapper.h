@@ -22,7 +22,8 @@
  *
  * Where the impostor cannot be made (the capture failed: see its error; or its textures
  * exceed this OpenGL's limits) the mesh itself is drawn, with one warning, so no data is
- * lost from view.
+ * lost from view. Points, wireframe and edges are drawn from the mesh too, as VTK's
+ * mapper draws them.
  */
 #ifndef vtkOpenGLReliefImpostorMapper_h
 #define vtkOpenGLReliefImpostorMapper_h
@@ -85,10 +86,11 @@ public:
    * the impostor exactly; the box's back faces are drawn, and a camera inside the box
    * still sees the object. On: the box's front faces are drawn and their depth kept, a
    * conservative depth (s4.4) the GPU may test before shading; what lies inside the box
-   * but in front of the object is hidden by it. A camera inside the box cannot see the
-   * front faces: that render writes true depth instead, with a warning.
+   * but in front of the object is hidden by it. A camera inside the box (or whose near
+   * plane reaches into it) cannot see the front faces: that render writes true depth
+   * instead, with one warning a setting.
    */
-  vtkSetMacro(ConservativeDepth, bool);
+  void SetConservativeDepth(bool conservative);
   vtkGetMacro(ConservativeDepth, bool);
   vtkBooleanMacro(ConservativeDepth, bool);
   ///@}
@@ -133,8 +135,10 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override;
-  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
-  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  void SetMapperShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
+  void SetCameraShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override;
 
   /**
    * The mesh with the colours VTK's mapper would give its points (this mapper's lookup
@@ -181,6 +185,9 @@ protected:
   vtkMTimeType UploadedCaptureTime = 0; // the capture the textures hold
   vtkWindow* UploadedWindow = nullptr;   // where they are, compared by address only
   bool UploadedPyramid = false;         // the search's pyramid is among them
+  vtkMTimeType FailedCaptureTime = 0;   // the capture whose textures could not be made,
+  vtkWindow* FailedWindow = nullptr;    // where (by address only),
+  bool FailedPyramid = false;           // and with or without the pyramid
   int Views = 0;                         // of the capture drawn
   int DepthSize = 0;
   int ColourSize = 0;

@@ -1,9 +1,11 @@
 // vtkOpenGLReliefImpostorMapper's bad input (issue 19 item 5), each case drawn three
 // times: one clear message, said once, and sane pixels: an empty mesh (nothing drawn), a
 // flat mesh (its box thickened, the impostor drawn), a mesh without colour (in the
-// actor's colour, as VTK's mapper draws it, and nothing said), invalid frustum parameters and resolutions (the mesh drawn instead), a search method
-// that cannot search an impostor, out-of-range steps, and a camera inside the box (seen
-// from inside; with ConservativeDepth, true depth instead, said once).
+// actor's colour, as VTK's mapper draws it, and nothing said), invalid frustum
+// parameters and resolutions (the mesh drawn instead), a search method that cannot
+// search an impostor, out-of-range steps, and a camera inside the box (seen
+// from inside; with ConservativeDepth, true depth instead, said once); and a wireframe
+// representation, which draws the mesh's edges.
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 
@@ -15,6 +17,7 @@
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkProperty.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -42,7 +45,7 @@ struct Case
 {
   const char* Name;
   vtkSmartPointer<vtkPolyData> Mesh;
-  std::function<void(vtkOpenGLReliefImpostorMapper*, vtkCamera*)> Setup;
+  std::function<void(vtkOpenGLReliefImpostorMapper*, vtkCamera*, vtkActor*)> Setup;
   const char* Message; // said once, or null: nothing said
   std::function<bool(const Outcome&)> Sane;
 };
@@ -67,7 +70,7 @@ Outcome Draw(const Case& test, ReliefEventRecorder* recorder)
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetViewUp(0.0, 0.0, 1.0);
   renderer->ResetCamera();
-  test.Setup(mapper, camera);
+  test.Setup(mapper, camera, actor);
   renderer->ResetCameraClippingRange();
   for (int frame = 0; frame < 3; ++frame)
   {
@@ -116,7 +119,7 @@ int TestReliefImpostorBadInput(int, char*[])
   planeSource->SetResolution(4, 4);
   vtkSmartPointer<vtkPolyData> plane = Source(planeSource);
   vtkNew<vtkPolyData> empty;
-  auto nothing = [](vtkOpenGLReliefImpostorMapper*, vtkCamera*) {};
+  auto nothing = [](vtkOpenGLReliefImpostorMapper*, vtkCamera*, vtkActor*) {};
   auto drawn = [](const Outcome& o) { return o.Drawn && o.Covered > 1500 && o.Brightness > 0.1; };
   auto meshDrawn = [](const Outcome& o) { return !o.Drawn && o.Covered > 1500; };
   const std::vector<Case> cases = {
@@ -124,7 +127,7 @@ int TestReliefImpostorBadInput(int, char*[])
       [](const Outcome& o) { return !o.Drawn && o.Covered == 0; } },
     { "FlatMesh",
       plane,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*) {
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*, vtkActor*) {
         mapper->GetImpostorFilter()->SetPadding(0.0); // a box of zero thickness
       },
       "flat along z", drawn },
@@ -133,41 +136,50 @@ int TestReliefImpostorBadInput(int, char*[])
       [](const Outcome& o) { return o.Drawn && o.Covered > 1500 && o.Brightness > 0.4; } },
     { "ApexDistance",
       object,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*) {
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*, vtkActor*) {
         mapper->GetImpostorFilter()->SetProjectionToReversePerspective();
         mapper->GetImpostorFilter()->SetApexDistance(0.5);
       },
       "The mesh itself is drawn", meshDrawn },
     { "ZeroResolution",
       object,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*) {
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*, vtkActor*) {
         mapper->GetImpostorFilter()->SetDepthResolution(0);
       },
       "The mesh itself is drawn", meshDrawn },
     { "ConeStep",
       object,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*) {
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*, vtkActor*) {
         mapper->SetSearchMethod(vtkOpenGLReliefMapper::CONE_STEP);
       },
       "cannot search an impostor", drawn },
     { "LinearSteps",
       object,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*) {
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera*, vtkActor*) {
         mapper->SetSearchMethod(vtkOpenGLReliefMapper::LINEAR_BINARY);
         mapper->SetLinearSteps(1000000);
       },
       "out of [1, 4096]", drawn },
     { "CameraInside",
       object,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera* camera) { LookFromACorner(mapper, camera); },
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera* camera, vtkActor*) {
+        LookFromACorner(mapper, camera);
+      },
       nullptr, drawn },
     { "CameraInsideConservative",
       object,
-      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera* camera) {
+      [](vtkOpenGLReliefImpostorMapper* mapper, vtkCamera* camera, vtkActor*) {
         mapper->ConservativeDepthOn();
         LookFromACorner(mapper, camera);
       },
       "camera is inside", drawn },
+    // not bad input, but not the impostor's either: the mesh's wireframe, as VTK draws it
+    { "Wireframe",
+      object,
+      [](vtkOpenGLReliefImpostorMapper*, vtkCamera*, vtkActor* actor) {
+        actor->GetProperty()->SetRepresentationToWireframe();
+      },
+      nullptr, [](const Outcome& o) { return !o.Drawn && o.Covered > 500; } },
   };
   int failures = 0;
   for (const Case& test : cases)

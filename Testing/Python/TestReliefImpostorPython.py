@@ -1,8 +1,9 @@
 """vtkReliefImpostorFilter from Python, in a VTK pipeline: a sphere coloured by
 vtkElevationFilter captured as six height fields; each slice's texels read back on the
-sphere (those along its outline within half a texel of it), its top seen from +z in the colour high elevation takes, and a change of the
-source's radius reaching the capture; and vtkOpenGLReliefImpostorMapper drawing that
-pipeline's sphere where VTK's own mapper draws it, in the colours of its scalars.
+sphere (those along its outline within half a texel of it), its top seen from +z in the
+colour high elevation takes, and a change of the source's radius reaching the capture;
+and vtkOpenGLReliefImpostorMapper drawing that pipeline's sphere where VTK's own mapper
+draws it, in the colours of its scalars.
 
 Run by ctest as: TestReliefImpostorPython.py -D <Data dir> -T <temp dir>,
 with VTK's /usr/bin/python3 and PYTHONPATH set to the built vtkrelief package.

@@ -313,3 +313,18 @@ TEST(ReliefImpostorFrame, ASheetSeenEdgeOnIsKept)
   }
   CurrentImpostor = nullptr;
 }
+
+TEST(ReliefImpostorFrame, ANearPlaneInsideTheObjectShowsItsCut)
+{
+  // a ray whose first point (the near plane's) lies inside the sphere: every view holds
+  // it, and it is the hit
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  vtkNew<vtkReliefImpostorFilter> filter = Capture(sphere, 6, false);
+  const ImpostorViews views = ViewsOf(filter);
+  CurrentImpostor = &views;
+  ImpostorSearch = &reliefSearchMaximumMipmap;
+  const Traced traced = Trace(filter, vec3(0.2f, -0.1f, 0.3f), normalize(vec3(1.0f, 0.5f, 0.2f)));
+  EXPECT_TRUE(traced.Hit);
+  EXPECT_LT(length(traced.Point - vec3(0.2f, -0.1f, 0.3f)), 1e-4f);
+  CurrentImpostor = nullptr;
+}

@@ -31,7 +31,8 @@
   float reliefColourLevel = log2(max(reliefPixelSize * reliefColourTexelsPerUnit, 1.0));
   vec3 reliefHitTexel = vec3(reliefHitUV.xy, float(reliefShadingView));
   vec4 reliefHitColour = textureLod(reliefImpostorColours, reliefHitTexel, reliefColourLevel);
-  reliefHitColour.rgb = reliefHitColour.a > 0.0 ? reliefHitColour.rgb / reliefHitColour.a : vec3(1.0);
+  reliefHitColour.rgb =
+    reliefHitColour.a > 0.0 ? reliefHitColour.rgb / reliefHitColour.a : vec3(1.0);
   vec3 reliefLitNormalVC = reliefImpostorNormalMatrix *
     textureLod(reliefImpostorNormals, reliefHitTexel, reliefColourLevel).xyz;
   // no normal there (an empty texel's): facing the viewer; a surface seen from behind is

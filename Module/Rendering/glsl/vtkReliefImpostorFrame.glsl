@@ -142,7 +142,7 @@ bool reliefImpostorHolds(vec3 point)
 struct ReliefImpostorHit
 {
   float share;  // how far along the segment, 0 at its entry, 1 at its exit
-  int view;     // the view whose surface the hit lies on (the last one searched)
+  int view;     // the view whose search placed the hit (0 for a hit at the entry)
   bool hit;     // false: the ray leaves the box outside the object
   int samples;  // height samples, the searches' and the tests'
 };
@@ -177,7 +177,10 @@ ReliefImpostorHit reliefImpostorSearch(
     }
     if (outside < 0)
     {
-      result.hit = result.view >= 0;
+      // every view holds the point: the hit; at the segment's start only where the near
+      // plane cuts into the object, which shows its cut there
+      result.hit = true;
+      result.view = max(result.view, 0);
       break;
     }
     // that view's field searched along the rest of the segment
