@@ -88,7 +88,8 @@ vec2 reliefFieldGradient(vec2 uv)
 float reliefClearBefore(ReliefGridRay grid, float t)
 {
   float run = max(abs(grid.direction.x), abs(grid.direction.y));
-  return max(0.0f, t - min(1e-3f / max(abs(grid.descent), 1e-30f), 0.05f / max(run, 1e-30f)));
+  float back = min(1e-3f / max(abs(grid.descent), 1e-30f), 0.05f / max(run, 1e-30f));
+  return max(0.0f, t - back);
 }
 
 ReliefHit reliefGridHit(ReliefRay ray, ReliefGridRay grid, float t, bool found, int samples)
