@@ -362,17 +362,15 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
     codes[k] = vtkReliefImpostorFilter::EncodeDepth(
       static_cast<float>(depthValues->GetComponent(static_cast<vtkIdType>(k), 0)));
   }
-  auto prepare = [window](vtkReliefArrayTexture* texture, int filter) {
+  for (vtkReliefArrayTexture* texture :
+    { this->DepthTexture.Get(), this->PyramidTexture.Get(), this->ColourTexture.Get(),
+      this->NormalTexture.Get() })
+  {
     texture->SetContext(window);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    texture->SetMinificationFilter(filter);
-    texture->SetMagnificationFilter(
-      filter == vtkTextureObject::Nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear);
-  };
-  prepare(this->DepthTexture, vtkTextureObject::Linear);
+  }
+  using Texture = vtkReliefArrayTexture;
   if (!this->DepthTexture->Create2DArrayFromRaw(depthSize, depthSize, views, GL_R16, GL_RED,
-        GL_UNSIGNED_SHORT, 2, codes.data(), false))
+        GL_UNSIGNED_SHORT, 2, codes.data(), Texture::LINEAR))
   {
     vtkErrorMacro("The impostor's depth texture could not be made: lower the impostor "
                   "filter's DepthResolution, or free GPU memory.");
@@ -411,9 +409,8 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
           std::lround(std::min(std::max(nodes->GetComponent(k, 0), 0.0), 1.0) * 65535.0)));
       }
     }
-    prepare(this->PyramidTexture, vtkTextureObject::Nearest);
     if (!this->PyramidTexture->Create2DArrayFromRaw(atlasSize[0], atlasSize[1], views, GL_R16,
-          GL_RED, GL_UNSIGNED_SHORT, 2, atlases.data(), false))
+          GL_RED, GL_UNSIGNED_SHORT, 2, atlases.data(), Texture::NEAREST))
     {
       vtkErrorMacro("The impostor's pyramid texture could not be made: lower the impostor "
                     "filter's DepthResolution, or search with ExactDDA, which needs none.");
@@ -453,12 +450,10 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
       packedNormals[4 * k + c] = static_cast<signed char>(std::lround(127.0 * normal[c] / length));
     }
   }
-  prepare(this->ColourTexture, vtkTextureObject::LinearMipmapLinear);
-  prepare(this->NormalTexture, vtkTextureObject::LinearMipmapLinear);
   if (!this->ColourTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8,
-        GL_RGBA, GL_UNSIGNED_BYTE, 4, premultiplied.data(), true) ||
+        GL_RGBA, GL_UNSIGNED_BYTE, 4, premultiplied.data(), Texture::MIPMAPPED) ||
     !this->NormalTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8_SNORM,
-      GL_RGBA, GL_BYTE, 4, packedNormals.data(), true))
+      GL_RGBA, GL_BYTE, 4, packedNormals.data(), Texture::MIPMAPPED))
   {
     vtkErrorMacro("The impostor's colour textures could not be made: lower the impostor "
                   "filter's ColourResolution, or free GPU memory.");

@@ -9,10 +9,16 @@
 
 vtkStandardNewMacro(vtkReliefArrayTexture);
 
+vtkReliefArrayTexture::vtkReliefArrayTexture()
+{
+  this->AutoParameters = 0;
+}
+
 bool vtkReliefArrayTexture::Create2DArrayFromRaw(unsigned int width, unsigned int height,
   unsigned int layers, unsigned int internalFormat, unsigned int format, unsigned int type,
-  int bytesPerTexel, const void* data, bool mipmapped)
+  int bytesPerTexel, const void* data, int filtering)
 {
+  const bool mipmapped = filtering == MIPMAPPED;
   if (!this->Context)
   {
     vtkErrorMacro("No context: call SetContext() with the render window first.");
@@ -33,6 +39,14 @@ bool vtkReliefArrayTexture::Create2DArrayFromRaw(unsigned int width, unsigned in
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage3D(this->Target, 0, static_cast<GLint>(internalFormat), static_cast<GLsizei>(width),
     static_cast<GLsizei>(height), static_cast<GLsizei>(layers), 0, format, type, data);
+  const GLint magnification = filtering == NEAREST ? GL_NEAREST : GL_LINEAR;
+  const GLint minification = filtering == MIPMAPPED ? GL_LINEAR_MIPMAP_LINEAR : magnification;
+  glTexParameteri(this->Target, GL_TEXTURE_MIN_FILTER, minification);
+  glTexParameteri(this->Target, GL_TEXTURE_MAG_FILTER, magnification);
+  glTexParameteri(this->Target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(this->Target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(this->Target, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(this->Target, GL_TEXTURE_MAX_LEVEL, mipmapped ? 1000 : 0);
   if (mipmapped)
   {
     glGenerateMipmap(this->Target);
