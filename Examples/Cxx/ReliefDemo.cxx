@@ -137,7 +137,7 @@ int main(int argc, char* argv[])
       "quadric frame (right) lets the grooves notch it",
       [](vtkRenderWindow* w) { ReliefPathScene::ShowCurvedPathFeatures(w, 800, 400, 0.06); } },
     { "impostor_beside_mesh",
-      "a 37k-triangle mesh (left) and its relief impostor, six height fields in its box (right)",
+      "an 18k-triangle mesh (left) and its relief impostor, six height fields in its box (right)",
       [](vtkRenderWindow* w) { ReliefScene::ShowImpostorBesideMesh(w, 800, 400); } },
     { "impostor_field", "400 impostors of that mesh sharing one mapper and its textures",
       [](vtkRenderWindow* w) { ReliefScene::ShowImpostorField(w, 800, 400, 400); } },
