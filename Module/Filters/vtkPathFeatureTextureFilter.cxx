@@ -283,38 +283,6 @@ int vtkPathFeatureTextureFilter::FillInputPortInformation(int port, vtkInformati
   return 1;
 }
 
-int vtkPathFeatureTextureFilter::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkImageData");
-  return 1;
-}
-
-vtkTypeBool vtkPathFeatureTextureFilter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inputs, outputs);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputs, outputs);
-  }
-  return this->Superclass::ProcessRequest(request, inputs, outputs);
-}
-
-int vtkPathFeatureTextureFilter::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputs)
-{
-  // the sizes depend on the paths, known only once they are read: whole images, one
-  // piece, not streamed
-  for (int port = 0; port < 2; ++port)
-  {
-    outputs->GetInformationObject(port)->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 0);
-  }
-  return 1;
-}
-
 namespace
 {
 // Reads the profiles of port 1 (or the default), each checked.

@@ -71,8 +71,8 @@
 #ifndef vtkPathFeatureTextureFilter_h
 #define vtkPathFeatureTextureFilter_h
 
-#include "vtkAlgorithm.h"
 #include "vtkReliefFiltersModule.h" // For export macro
+#include "vtkReliefWholeImagesAlgorithm.h"
 
 #include <memory> // For Internal
 #include <vector> // For ListCells
@@ -80,11 +80,11 @@
 class vtkImageData;
 class vtkPolyData;
 
-class VTKRELIEFFILTERS_EXPORT vtkPathFeatureTextureFilter : public vtkAlgorithm
+class VTKRELIEFFILTERS_EXPORT vtkPathFeatureTextureFilter : public vtkReliefWholeImagesAlgorithm
 {
 public:
   static vtkPathFeatureTextureFilter* New();
-  vtkTypeMacro(vtkPathFeatureTextureFilter, vtkAlgorithm);
+  vtkTypeMacro(vtkPathFeatureTextureFilter, vtkReliefWholeImagesAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The most elements one cell lists: the shader's loop bound.
@@ -167,19 +167,13 @@ public:
   /// Bytes of both textures as the last update made them.
   vtkIdType GetTextureBytes();
 
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
-
 protected:
   vtkPathFeatureTextureFilter();
   ~vtkPathFeatureTextureFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs);
   int RequestData(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs);
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   int GridResolution[2] = { 0, 0 };
   int ResolutionUsed[2] = { 0, 0 };

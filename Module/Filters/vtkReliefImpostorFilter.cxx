@@ -573,37 +573,6 @@ int vtkReliefImpostorFilter::FillInputPortInformation(int port, vtkInformation* 
   return 1;
 }
 
-int vtkReliefImpostorFilter::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkImageData");
-  return 1;
-}
-
-vtkTypeBool vtkReliefImpostorFilter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inputs, outputs);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputs, outputs);
-  }
-  return this->Superclass::ProcessRequest(request, inputs, outputs);
-}
-
-int vtkReliefImpostorFilter::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputs)
-{
-  // whole images, one piece, not streamed
-  for (int port = 0; port < 2; ++port)
-  {
-    outputs->GetInformationObject(port)->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 0);
-  }
-  return 1;
-}
-
 bool vtkReliefImpostorFilter::CheckSettings()
 {
   for (int resolution : { this->DepthResolution, this->ColourResolution })

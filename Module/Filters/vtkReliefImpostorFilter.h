@@ -53,19 +53,19 @@
 #ifndef vtkReliefImpostorFilter_h
 #define vtkReliefImpostorFilter_h
 
-#include "vtkAlgorithm.h"
 #include "vtkReliefFiltersModule.h" // For export macro
+#include "vtkReliefWholeImagesAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
 
 class vtkImageData;
 class vtkPolyData;
 
-class VTKRELIEFFILTERS_EXPORT vtkReliefImpostorFilter : public vtkAlgorithm
+class VTKRELIEFFILTERS_EXPORT vtkReliefImpostorFilter : public vtkReliefWholeImagesAlgorithm
 {
 public:
   static vtkReliefImpostorFilter* New();
-  vtkTypeMacro(vtkReliefImpostorFilter, vtkAlgorithm);
+  vtkTypeMacro(vtkReliefImpostorFilter, vtkReliefWholeImagesAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Projections
@@ -166,19 +166,13 @@ public:
    */
   bool GetViewProjection(int view, double matrix[16]);
 
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
-
 protected:
   vtkReliefImpostorFilter();
   ~vtkReliefImpostorFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs);
   int RequestData(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs);
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   int NumberOfViews = 6;
   int Projection = ORTHOGRAPHIC;

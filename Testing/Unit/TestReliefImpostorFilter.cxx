@@ -4,9 +4,8 @@
 // Fig. 9), what no view saw, colours, and bad input.
 
 #include "ReliefEventRecorder.h"
+#include "ReliefImpostorMeshes.h"
 
-#include "vtkAppendPolyData.h"
-#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkElevationFilter.h"
 #include "vtkFieldData.h"
@@ -17,7 +16,6 @@
 #include "vtkPolyData.h"
 #include "vtkReliefImpostorFilter.h"
 #include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <glm/glm.hpp>
@@ -54,32 +52,8 @@ glm::dvec3 ToWorld(const glm::dmat4& projection, const glm::dvec3& view)
   return glm::dvec3(h) / h.w;
 }
 
-vtkSmartPointer<vtkPolyData> Sphere(double radius, int resolution)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(radius);
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(resolution);
-  sphere->Update();
-  return sphere->GetOutput();
-}
-
-// A unit cube standing on a 4 x 4 ground (z = 0), its walls at x, y = +-0.5.
-vtkSmartPointer<vtkPolyData> CubeOnGround()
-{
-  vtkNew<vtkCubeSource> cube;
-  cube->SetCenter(0.0, 0.0, 0.5);
-  vtkNew<vtkPlaneSource> ground;
-  ground->SetOrigin(-2.0, -2.0, 0.0);
-  ground->SetPoint1(2.0, -2.0, 0.0);
-  ground->SetPoint2(-2.0, 2.0, 0.0);
-  ground->SetResolution(8, 8);
-  vtkNew<vtkAppendPolyData> both;
-  both->AddInputConnection(cube->GetOutputPort());
-  both->AddInputConnection(ground->GetOutputPort());
-  both->Update();
-  return both->GetOutput();
-}
+using ReliefImpostorMeshes::CubeOnGround;
+using ReliefImpostorMeshes::Sphere;
 
 // The world point of each texel of slice `view` that met the mesh.
 std::vector<glm::dvec3> Hits(vtkReliefImpostorFilter* filter, int view)

@@ -3,17 +3,15 @@
 // compiles, against the mesh's own surface. Six views carve a sphere that one view
 // extrudes; reverse perspective puts the hits on the walls of a box on a ground; every
 // exact search finds the same hits.
+#include "ReliefImpostorMeshes.h"
 #include "ReliefMirrorMaps.h"
 
-#include "vtkAppendPolyData.h"
-#include "vtkCubeSource.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkReliefImpostorFilter.h"
-#include "vtkSphereSource.h"
 
 #include <gtest/gtest.h>
 
@@ -111,14 +109,10 @@ bool SphereMet(vec3 origin, vec3 direction, float radius)
   return b < 0.0f && b * b - dot(origin, origin) + radius * radius >= 0.0f;
 }
 
+// The sphere the frame's tests capture: radius 1, 96 facets around.
 vtkSmartPointer<vtkPolyData> Sphere()
 {
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(96);
-  sphere->SetPhiResolution(96);
-  sphere->Update();
-  return sphere->GetOutput();
+  return ReliefImpostorMeshes::Sphere(1.0, 96);
 }
 
 struct SearchMethod
@@ -203,17 +197,7 @@ TEST(ReliefImpostorFrame, OneViewExtrudesWhatSixViewsCarve)
 TEST(ReliefImpostorFrame, ReversePerspectiveHitsTheWallsOfABoxOnAGround)
 {
   // a unit cube standing on a 4 x 4 ground, seen from above at 60 degrees from vertical
-  vtkNew<vtkCubeSource> cube;
-  cube->SetCenter(0.0, 0.0, 0.5);
-  vtkNew<vtkPlaneSource> ground;
-  ground->SetOrigin(-2.0, -2.0, 0.0);
-  ground->SetPoint1(2.0, -2.0, 0.0);
-  ground->SetPoint2(-2.0, 2.0, 0.0);
-  vtkNew<vtkAppendPolyData> scene;
-  scene->AddInputConnection(cube->GetOutputPort());
-  scene->AddInputConnection(ground->GetOutputPort());
-  scene->Update();
-  vtkNew<vtkReliefImpostorFilter> filter = Capture(scene->GetOutput(), 6, true);
+  vtkNew<vtkReliefImpostorFilter> filter = Capture(ReliefImpostorMeshes::CubeOnGround(), 6, true);
   const ImpostorViews views = ViewsOf(filter);
   CurrentImpostor = &views;
   const float texel = 4.1f / 128.0f;
