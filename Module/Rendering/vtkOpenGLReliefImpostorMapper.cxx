@@ -48,6 +48,130 @@ vtkStandardNewMacro(vtkOpenGLReliefImpostorMapper);
 
 namespace
 {
+// View `view`'s frame for normals, row major: x along the next axis after the view's, z
+// out of its face (toward what it sees), a rotation.
+void NormalFrame(int view, int views, double frame[3][3])
+{
+  const int axis = views == 1 ? 2 : view / 2;
+  const double sign = views == 1 || view % 2 == 0 ? 1.0 : -1.0;
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      frame[row][column] = 0.0;
+    }
+  }
+  frame[(axis + 1) % 3][0] = 1.0;
+  frame[(axis + 2) % 3][1] = sign;
+  frame[axis][2] = sign;
+}
+
+// A unit vector's octahedral coordinates in [-1, 1]^2 (Cigolle et al. 2014, "A survey of
+// efficient representations for independent unit vectors", s3.3): the vector over its
+// 1-norm, the lower half folded out over the diagonals; vtkReliefImpostorFragmentDec.glsl
+// unfolds it. Filtered bilinearly and across mipmaps as two channels, it stays close to
+// the mean of the normals except across the fold, which each view's frame (NormalFrame)
+// keeps behind what the view sees: seen from below, in model axes, every normal a view
+// holds would lie on the fold.
+void EncodeOctahedral(const double normal[3], double encoded[2])
+{
+  const double norm = std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]);
+  if (!(norm > 0.0) || !std::isfinite(norm))
+  {
+    encoded[0] = encoded[1] = 0.0; // no normal: +z
+    return;
+  }
+  const double x = normal[0] / norm;
+  const double y = normal[1] / norm;
+  if (normal[2] >= 0.0)
+  {
+    encoded[0] = x;
+    encoded[1] = y;
+    return;
+  }
+  encoded[0] = (1.0 - std::abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+  encoded[1] = (1.0 - std::abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+}
+
+// Fills the texels of a size x size layer of `channels` values that nothing covered
+// (coverage 0) from the covered texels around them, the nearest weighing most: push-pull
+// (Gortler et al. 1996, "The Lumigraph", s3.5.2), coverage-weighted means pulled up a
+// pyramid, then pushed down into the empty texels. A layer that saw nothing is kept.
+void FillEmptyTexels(float* values, int channels, const float* coverage, int size)
+{
+  struct Level
+  {
+    int Size;
+    std::vector<float> Sums; // coverage-weighted
+    std::vector<float> Weights;
+  };
+  std::vector<Level> levels(1);
+  levels[0].Size = size;
+  const size_t texels = static_cast<size_t>(size) * size;
+  levels[0].Weights.assign(coverage, coverage + texels);
+  levels[0].Sums.resize(texels * channels);
+  for (size_t k = 0; k < texels * channels; ++k)
+  {
+    levels[0].Sums[k] = values[k] * coverage[k / channels];
+  }
+  while (levels.back().Size > 1)
+  {
+    const Level& fine = levels.back();
+    Level coarse;
+    coarse.Size = (fine.Size + 1) / 2;
+    coarse.Weights.assign(static_cast<size_t>(coarse.Size) * coarse.Size, 0.0f);
+    coarse.Sums.assign(coarse.Weights.size() * channels, 0.0f);
+    for (int j = 0; j < fine.Size; ++j)
+    {
+      for (int i = 0; i < fine.Size; ++i)
+      {
+        const size_t from = static_cast<size_t>(j) * fine.Size + i;
+        const size_t to = static_cast<size_t>(j / 2) * coarse.Size + i / 2;
+        coarse.Weights[to] += fine.Weights[from];
+        for (int c = 0; c < channels; ++c)
+        {
+          coarse.Sums[to * channels + c] += fine.Sums[from * channels + c];
+        }
+      }
+    }
+    levels.push_back(std::move(coarse));
+  }
+  if (!(levels.back().Weights[0] > 0.0f))
+  {
+    return;
+  }
+  for (size_t level = levels.size() - 1; level-- > 0;)
+  {
+    Level& fine = levels[level];
+    const Level& coarse = levels[level + 1];
+    for (int j = 0; j < fine.Size; ++j)
+    {
+      for (int i = 0; i < fine.Size; ++i)
+      {
+        const size_t at = static_cast<size_t>(j) * fine.Size + i;
+        const size_t parent = static_cast<size_t>(j / 2) * coarse.Size + i / 2;
+        if (fine.Weights[at] > 0.0f)
+        {
+          continue;
+        }
+        fine.Weights[at] = 1.0f;
+        for (int c = 0; c < channels; ++c)
+        {
+          fine.Sums[at * channels + c] =
+            coarse.Sums[parent * channels + c] / coarse.Weights[parent];
+        }
+      }
+    }
+  }
+  for (size_t k = 0; k < texels; ++k)
+  {
+    for (int c = 0; c < channels; ++c)
+    {
+      values[k * channels + c] = levels[0].Sums[k * channels + c] / levels[0].Weights[k];
+    }
+  }
+}
+
 using Mapper = vtkOpenGLReliefMapper;
 
 // A key matrix of VTK's (stored transposed) as the matrix it stands for.
@@ -75,6 +199,97 @@ vtkIdType LayerTexels(vtkImageData* image)
 vtkOpenGLReliefImpostorMapper::vtkOpenGLReliefImpostorMapper()
 {
   vtkReliefForwardMessages(this->ImpostorFilter, this);
+  this->SetAutomaticResolution(true);
+}
+
+void vtkOpenGLReliefImpostorMapper::SetAutomaticResolution(bool automatic)
+{
+  if (automatic == this->AutomaticResolution && this->AppliedDepthResolution != 0)
+  {
+    return;
+  }
+  this->AutomaticResolution = automatic;
+  this->Modified();
+  if (automatic)
+  {
+    // from the least, raised by the next renders as they need
+    this->AppliedDepthResolution = MinimumAutomaticResolution;
+    this->AppliedColourResolution = 2 * MinimumAutomaticResolution;
+    this->ImpostorFilter->SetDepthResolution(this->AppliedDepthResolution);
+    this->ImpostorFilter->SetColourResolution(this->AppliedColourResolution);
+  }
+}
+
+void vtkOpenGLReliefImpostorMapper::SetCompressColours(bool compress)
+{
+  if (compress != this->CompressColours)
+  {
+    this->CompressColours = compress;
+    this->UploadedCaptureTime = 0; // uploaded again, in the other format
+    this->Modified();
+  }
+}
+
+double vtkOpenGLReliefImpostorMapper::ScreenSpan(
+  const double bounds[6], vtkRenderer* ren, vtkActor* actor)
+{
+  int width = 1;
+  int height = 1;
+  ren->GetTiledSize(&width, &height);
+  vtkMatrix4x4* worldToClip =
+    ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+      ren->GetTiledAspectRatio(), -1.0, 1.0);
+  vtkNew<vtkMatrix4x4> modelToClip;
+  vtkMatrix4x4::Multiply4x4(worldToClip, actor->GetMatrix(), modelToClip);
+  double low[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double high[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double model[4] = { bounds[corner & 1], bounds[2 + (corner >> 1 & 1)],
+      bounds[4 + (corner >> 2)], 1.0 };
+    double clip[4];
+    modelToClip->MultiplyPoint(model, clip);
+    if (clip[3] <= 0.0)
+    {
+      return std::max(width, height); // the box reaches behind the eye: the whole viewport
+    }
+    for (int axis = 0; axis < 2; ++axis)
+    {
+      low[axis] = std::min(low[axis], clip[axis] / clip[3]);
+      high[axis] = std::max(high[axis], clip[axis] / clip[3]);
+    }
+  }
+  // clipped to the viewport: what lies outside it needs no texels
+  const double across = 0.5 * width * (std::min(high[0], 1.0) - std::max(low[0], -1.0));
+  const double down = 0.5 * height * (std::min(high[1], 1.0) - std::max(low[1], -1.0));
+  return std::max({ across, down, 0.0 });
+}
+
+void vtkOpenGLReliefImpostorMapper::FollowScreenSize(vtkRenderer* ren, vtkActor* actor)
+{
+  vtkReliefImpostorFilter* filter = this->ImpostorFilter;
+  if (filter->GetDepthResolution() != this->AppliedDepthResolution ||
+    filter->GetColourResolution() != this->AppliedColourResolution)
+  {
+    this->AutomaticResolution = false; // the user's own resolutions
+  }
+  if (!this->AutomaticResolution)
+  {
+    return;
+  }
+  const double span = ScreenSpan(this->GetBounds(), ren, actor);
+  int wanted = MinimumAutomaticResolution;
+  while (wanted < span && wanted < MaximumAutomaticResolution)
+  {
+    wanted *= 2;
+  }
+  if (wanted > this->AppliedDepthResolution)
+  {
+    this->AppliedDepthResolution = wanted;
+    this->AppliedColourResolution = 2 * wanted;
+    filter->SetDepthResolution(this->AppliedDepthResolution);
+    filter->SetColourResolution(this->AppliedColourResolution);
+  }
 }
 
 vtkOpenGLReliefImpostorMapper::~vtkOpenGLReliefImpostorMapper() = default;
@@ -261,8 +476,9 @@ vtkPolyData* vtkOpenGLReliefImpostorMapper::ColouredMesh(vtkPolyData* mesh)
   return this->Coloured;
 }
 
-bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren)
+bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren, vtkActor* actor)
 {
+  this->FollowScreenSize(ren, actor);
   this->ImpostorFilter->SetInputData(this->ColouredMesh(this->CurrentInput));
   this->ImpostorFilter->Update();
   vtkImageData* depths = this->ImpostorFilter->GetDepthOutput();
@@ -341,8 +557,7 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
   const int colourSize = colours->GetDimensions()[0];
   const int views = depths->GetDimensions()[2];
   const bool pyramid = this->GetActiveSearch().NeedsAcceleration();
-  // the pyramid's atlas is half again as wide as the depths
-  const int widest = std::max(colourSize, pyramid ? depthSize + depthSize / 2 + 1 : depthSize);
+  const int widest = std::max(colourSize, depthSize);
   const int limit = vtkTextureObject::GetMaximumTextureSize(window);
   if (widest > limit)
   {
@@ -398,15 +613,22 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
       vtkNew<vtkMaximumMipmapFilter> builder;
       builder->SetInputData(field);
       builder->Update();
+      // the levels above 0, to the right of level 0 in the atlas: the shader takes level
+      // 0, each cell's least corner, from the depths themselves
       vtkImageData* atlas = builder->GetOutput();
-      atlasSize[0] = atlas->GetDimensions()[0];
+      const int atlasWidth = atlas->GetDimensions()[0];
+      atlasSize[0] = atlasWidth - depthSize;
       atlasSize[1] = atlas->GetDimensions()[1];
       vtkDataArray* nodes = atlas->GetPointData()->GetScalars();
-      for (vtkIdType k = 0; k < nodes->GetNumberOfTuples(); ++k)
+      for (int row = 0; row < atlasSize[1]; ++row)
       {
-        // minima of 16-bit depths: exact as 16 bits again
-        atlases.push_back(static_cast<unsigned short>(
-          std::lround(std::min(std::max(nodes->GetComponent(k, 0), 0.0), 1.0) * 65535.0)));
+        for (int column = depthSize; column < atlasWidth; ++column)
+        {
+          // minima of 16-bit depths: exact as 16 bits again
+          const double least = nodes->GetComponent(row * atlasWidth + column, 0);
+          atlases.push_back(static_cast<unsigned short>(
+            std::lround(std::min(std::max(least, 0.0), 1.0) * 65535.0)));
+        }
       }
     }
     if (!this->PyramidTexture->Create2DArrayFromRaw(atlasSize[0], atlasSize[1], views, GL_R16,
@@ -422,38 +644,66 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
     this->PyramidTexture->ReleaseGraphicsResources(window);
   }
 
-  // colours premultiplied by their coverage, so that mipmaps and filtering at outlines
-  // blend only what was seen; normals as signed bytes, zero where nothing was
+  // colours and normals (in the view's frame, NormalFrame, where what the view sees faces
+  // +z, the octahedral map's unfolded half), with the texels that saw nothing filled
+  // from those around them, so that filtering and mipmaps at outlines blend only what
+  // was seen. Colours are compressed where the GL can (S3TC DXT1, half a byte a texel);
+  // normals are not: compressed (RGTC2), their coarse mipmaps' errors raised the colour
+  // error of a field of small instances by a tenth (0.044 to 0.049 against the mesh)
   vtkDataArray* rgba = colours->GetPointData()->GetScalars();
   vtkDataArray* normals = colours->GetPointData()->GetArray("Normals");
+  const size_t layerTexels = static_cast<size_t>(colourSize) * colourSize;
   const size_t colourTexels = static_cast<size_t>(rgba->GetNumberOfTuples());
-  std::vector<unsigned char> premultiplied(4 * colourTexels);
-  std::vector<signed char> packedNormals(4 * colourTexels, 0);
+  std::vector<float> coverage(colourTexels);
+  std::vector<float> colour(3 * colourTexels);
+  std::vector<float> normal(3 * colourTexels);
   for (size_t k = 0; k < colourTexels; ++k)
   {
     const vtkIdType id = static_cast<vtkIdType>(k);
-    const double alpha = rgba->GetComponent(id, 3) / 255.0;
+    coverage[k] = static_cast<float>(rgba->GetComponent(id, 3) / 255.0);
+    double model[3] = { 0.0, 0.0, 0.0 };
+    if (normals)
+    {
+      normals->GetTuple(id, model);
+    }
+    double frame[3][3];
+    NormalFrame(static_cast<int>(k / layerTexels), views, frame);
     for (int c = 0; c < 3; ++c)
     {
-      premultiplied[4 * k + c] =
-        static_cast<unsigned char>(std::lround(rgba->GetComponent(id, c) * alpha));
-    }
-    premultiplied[4 * k + 3] = static_cast<unsigned char>(rgba->GetComponent(id, 3));
-    double normal[3] = { 0.0, 0.0, 0.0 };
-    if (normals && alpha > 0.0)
-    {
-      normals->GetTuple(id, normal);
-    }
-    const double length = vtkMath::Norm(normal);
-    for (int c = 0; c < 3 && length > 0.0 && std::isfinite(length); ++c)
-    {
-      packedNormals[4 * k + c] = static_cast<signed char>(std::lround(127.0 * normal[c] / length));
+      colour[3 * k + c] = static_cast<float>(rgba->GetComponent(id, c) / 255.0);
+      normal[3 * k + c] = static_cast<float>(
+        frame[0][c] * model[0] + frame[1][c] * model[1] + frame[2][c] * model[2]);
     }
   }
-  if (!this->ColourTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8,
-        GL_RGBA, GL_UNSIGNED_BYTE, 4, premultiplied.data(), Texture::MIPMAPPED) ||
-    !this->NormalTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RGBA8_SNORM,
-      GL_RGBA, GL_BYTE, 4, packedNormals.data(), Texture::MIPMAPPED))
+  for (int view = 0; view < views; ++view)
+  {
+    const size_t first = static_cast<size_t>(view) * layerTexels;
+    FillEmptyTexels(colour.data() + 3 * first, 3, coverage.data() + first, colourSize);
+    FillEmptyTexels(normal.data() + 3 * first, 3, coverage.data() + first, colourSize);
+  }
+  std::vector<unsigned char> colourBytes(3 * colourTexels);
+  std::vector<signed char> octahedral(2 * colourTexels);
+  for (size_t k = 0; k < colourTexels; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      colourBytes[3 * k + c] = static_cast<unsigned char>(
+        std::lround(255.0 * std::min(std::max(colour[3 * k + c], 0.0f), 1.0f)));
+    }
+    const double vector[3] = { normal[3 * k], normal[3 * k + 1], normal[3 * k + 2] };
+    double encoded[2];
+    EncodeOctahedral(vector, encoded);
+    for (int c = 0; c < 2; ++c)
+    {
+      octahedral[2 * k + c] = static_cast<signed char>(std::lround(127.0 * encoded[c]));
+    }
+  }
+  const bool compressed = this->CompressColours && GLEW_EXT_texture_compression_s3tc;
+  if (!this->ColourTexture->Create2DArrayFromRaw(colourSize, colourSize, views,
+        compressed ? GL_COMPRESSED_RGB_S3TC_DXT1_EXT : GL_RGB8, GL_RGB, GL_UNSIGNED_BYTE,
+        compressed ? 0 : 3, colourBytes.data(), Texture::MIPMAPPED) ||
+    !this->NormalTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RG8_SNORM,
+      GL_RG, GL_BYTE, 2, octahedral.data(), Texture::MIPMAPPED))
   {
     vtkErrorMacro("The impostor's colour textures could not be made: lower the impostor "
                   "filter's ColourResolution, or free GPU memory.");
@@ -539,7 +789,7 @@ void vtkOpenGLReliefImpostorMapper::RenderPieceStart(vtkRenderer* ren, vtkActor*
   vtkProperty* property = actor->GetProperty();
   const bool surface =
     property->GetRepresentation() == VTK_SURFACE && !property->GetEdgeVisibility();
-  const bool impostor = surface && this->UpdateImpostor(ren);
+  const bool impostor = surface && this->UpdateImpostor(ren, actor);
   const bool writeDepth = impostor && this->ShouldWriteDepth(ren, actor);
   if (impostor != this->DrawingImpostor || writeDepth != this->WritingDepth)
   {
@@ -741,6 +991,21 @@ void vtkOpenGLReliefImpostorMapper::SetMapperShaderParameters(
     ratios[view] = static_cast<float>(this->GetDepthRatio(view));
   }
   program->SetUniform1fv("reliefImpostorDepthRatios", this->Views, ratios);
+  std::vector<float> frames(16 * static_cast<size_t>(this->Views), 0.0f); // column-major
+  for (int view = 0; view < this->Views; ++view)
+  {
+    double frame[3][3];
+    NormalFrame(view, this->Views, frame);
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int column = 0; column < 3; ++column)
+      {
+        frames[16 * view + 4 * column + row] = static_cast<float>(frame[row][column]);
+      }
+    }
+    frames[16 * view + 15] = 1.0f;
+  }
+  program->SetUniformMatrix4x4v("reliefImpostorNormalFrames", this->Views, frames.data());
   const float low[3] = { static_cast<float>(this->CaptureBox[0]),
     static_cast<float>(this->CaptureBox[2]), static_cast<float>(this->CaptureBox[4]) };
   const float high[3] = { static_cast<float>(this->CaptureBox[1]),
@@ -851,6 +1116,8 @@ void vtkOpenGLReliefImpostorMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LinearSteps: " << this->LinearSteps << "\n";
   os << indent << "BinarySteps: " << this->BinarySteps << "\n";
   os << indent << "ConservativeDepth: " << this->ConservativeDepth << "\n";
+  os << indent << "AutomaticResolution: " << this->AutomaticResolution << "\n";
+  os << indent << "CompressColours: " << this->CompressColours << "\n";
   os << indent << "DisplayMode: " << (this->DisplayMode == SAMPLE_COUNT ? "SampleCount" : "Shaded")
      << "\n";
   os << indent << "DrawingImpostor: " << this->DrawingImpostor << "\n";

@@ -7,18 +7,20 @@
  * triangles of the object's box, and each pixel follows its view ray through the box into
  * every view, searched by one of the relief search methods, to the first point every
  * view's field holds inside the object (vtkReliefImpostorFrame.glsl). That point is lit
- * with the captured normal and colour of the view it lies on, by the renderer's lights
- * and the actor's property as VTK's mapper lights the mesh (the mesh's scalars colour it
- * through this mapper's lookup table; without scalars, the property's colour does),
- * and its true depth is written, so the impostor interpenetrates the rest of the scene
- * as the mesh would. A frame costs the pixels the object covers, not its triangles: a
+ * with the captured normal and colour of the view that sees it most squarely, by the
+ * renderer's lights and the actor's property as VTK's mapper lights the mesh (the mesh's
+ * scalars colour it through this mapper's lookup table; without scalars, the property's
+ * colour does), and its true depth is written, so the impostor interpenetrates the rest
+ * of the scene as the mesh would. A frame costs the pixels the object covers, not its triangles: a
  * field of a thousand copies of a detailed part draws at the cost of its textures.
  *
  * Port 0 takes the mesh. The mapper captures it with its own vtkReliefImpostorFilter
  * (GetImpostorFilter() to set views, projection, resolutions, a colour texture), once per
- * change of the mesh or of those settings; the mapper's bounds are the capture's box.
- * Many actors may share one mapper, each with its own matrix and property: the textures
- * are made and uploaded once.
+ * change of the mesh or of those settings, at the resolution the impostor's size on
+ * screen needs (AutomaticResolution); the mapper's bounds are the capture's box. Many
+ * actors may share one mapper, each with its own matrix and property: the textures are
+ * made and uploaded once, colours compressed (CompressColours), so a field of small
+ * instances holds a few hundred kilobytes however many triangles the mesh has.
  *
  * Where the impostor cannot be made (the capture failed: see its error; or its textures
  * exceed this OpenGL's limits) the mesh itself is drawn, with one warning, so no data is
@@ -95,6 +97,35 @@ public:
   vtkBooleanMacro(ConservativeDepth, bool);
   ///@}
 
+  ///@{
+  /**
+   * On (default): the capture's resolutions follow the impostor's size on screen. Its
+   * depth texels per view side are the power of two at or above the most pixels its box
+   * has spanned in any render (at least MinimumAutomaticResolution, at most
+   * MaximumAutomaticResolution), its colour texels twice as many; they are raised, and the
+   * mesh captured again, only when the impostor is drawn larger than its capture resolves.
+   * A field of small instances thus holds small textures, and a close-up sharp ones. Off:
+   * the filter's resolutions are kept as set. Setting the filter's DepthResolution or
+   * ColourResolution yourself turns it off.
+   */
+  void SetAutomaticResolution(bool automatic);
+  vtkGetMacro(AutomaticResolution, bool);
+  vtkBooleanMacro(AutomaticResolution, bool);
+  ///@}
+  static constexpr int MinimumAutomaticResolution = 64;
+  static constexpr int MaximumAutomaticResolution = 512;
+
+  ///@{
+  /**
+   * On (default): the colours are held compressed where the GL can (S3TC DXT1: half a
+   * byte a texel, a sixth of 8-bit RGB), compressed by the GL on upload. Off: 8 bits a
+   * channel. Normals are held as two signed bytes (octahedral) either way.
+   */
+  void SetCompressColours(bool compress);
+  vtkGetMacro(CompressColours, bool);
+  vtkBooleanMacro(CompressColours, bool);
+  ///@}
+
   enum DisplayModes
   {
     SHADED = 0,
@@ -117,7 +148,7 @@ public:
 
   /**
    * GPU bytes of the impostor's textures as last uploaded (depths, the search's pyramids,
-   * colours with their mipmaps, normals); 0 before the first render and after release.
+   * colours and normals with their mipmaps); 0 before the first render and after release.
    */
   vtkIdType GetTextureBytes();
 
@@ -148,7 +179,11 @@ protected:
   vtkPolyData* ColouredMesh(vtkPolyData* mesh);
   /// Captures the mesh and uploads the textures where they are out of date; false when
   /// the impostor cannot be drawn (said once).
-  bool UpdateImpostor(vtkRenderer* ren);
+  bool UpdateImpostor(vtkRenderer* ren, vtkActor* actor);
+  /// AutomaticResolution: raises the capture's resolutions to what `actor` needs on screen.
+  void FollowScreenSize(vtkRenderer* ren, vtkActor* actor);
+  /// The most pixels across that the box of `actor` spans in `ren`'s viewport.
+  static double ScreenSpan(const double bounds[6], vtkRenderer* ren, vtkActor* actor);
   /// The capture's textures on the GPU of `window`; false where one cannot be made.
   bool UploadTextures(vtkOpenGLRenderWindow* window);
   void ReleaseTextures(vtkWindow* window);
@@ -171,7 +206,11 @@ protected:
   int LinearSteps = 64;
   int BinarySteps = 8;
   bool ConservativeDepth = false;
+  bool AutomaticResolution = true;
+  bool CompressColours = true;
   int DisplayMode = SHADED;
+  int AppliedDepthResolution = 0;  // the resolutions AutomaticResolution gave the filter
+  int AppliedColourResolution = 0;
 
   vtkNew<vtkReliefImpostorFilter> ImpostorFilter;
   vtkNew<vtkPolyData> Box; // drawn in place of the mesh

@@ -51,14 +51,22 @@ bool vtkReliefArrayTexture::Create2DArrayFromRaw(unsigned int width, unsigned in
   {
     glGenerateMipmap(this->Target);
   }
-  this->Deactivate();
   vtkIdType texels = 0;
+  vtkIdType compressedBytes = 0;
   for (unsigned int level = 0; level == 0 || (mipmapped && (width >> level | height >> level));
        ++level)
   {
     texels += static_cast<vtkIdType>(std::max(width >> level, 1u)) * std::max(height >> level, 1u);
+    GLint levelBytes = 0;
+    if (bytesPerTexel == 0)
+    {
+      glGetTexLevelParameteriv(
+        this->Target, static_cast<GLint>(level), GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &levelBytes);
+    }
+    compressedBytes += levelBytes;
   }
-  this->Bytes = texels * layers * bytesPerTexel;
+  this->Deactivate();
+  this->Bytes = bytesPerTexel == 0 ? compressedBytes : texels * layers * bytesPerTexel;
   return glGetError() == GL_NO_ERROR;
 }
 

@@ -35,7 +35,8 @@ public:
    * Makes the texture: `layers` layers of width x height texels from `data` (layer by
    * layer, rows from the bottom), held as `internalFormat` (GL_R16, GL_RGBA8, ...), given
    * as `format` and `type` (GL_RED and GL_UNSIGNED_SHORT, ...), with `bytesPerTexel` on
-   * the GPU for GetBytes(), read with `filtering` (MIPMAPPED makes the mipmaps) and
+   * the GPU for GetBytes() (0 for a compressed `internalFormat`, which the GL compresses
+   * and whose sizes it reports), read with `filtering` (MIPMAPPED makes the mipmaps) and
    * clamped at its edges. The context must be set (SetContext) and current. False where
    * GL refused.
    */

@@ -47,6 +47,14 @@ void Use(vtkRenderer* renderer, vtkMapper* mapper)
   }
 }
 
+// AutomaticResolution from its least again: each scene's textures are what it needs, not
+// what an earlier scene or the calibration's nearer views needed.
+void RestartAutomaticResolution(vtkOpenGLReliefImpostorMapper* impostor)
+{
+  impostor->SetAutomaticResolution(false);
+  impostor->SetAutomaticResolution(true);
+}
+
 double CoveredShare(const ReliefMetrics::Capture& capture)
 {
   long covered = 0;
@@ -112,6 +120,7 @@ struct Row
   double MeshColourSupersampled = 0.0; // the mesh's own, at one sample a pixel
   double Samples = 0.0;
   long long Bytes = 0;
+  int DepthResolution = 0; // the capture's, as the impostor was drawn
 };
 
 // The mesh and the impostor in the renderer's current view: times and errors.
@@ -145,6 +154,7 @@ Row Measure(vtkRenderWindow* window, vtkRenderer* renderer, Mappers& mappers, in
   row.MeshColourSupersampled = ReliefMetrics::MeasureColourError(truth, supersampled).Rmse;
   row.Samples = SamplesPerPixel(window, mappers.Impostor);
   row.Bytes = mappers.Impostor->GetTextureBytes();
+  row.DepthResolution = mappers.Impostor->GetImpostorFilter()->GetDepthResolution();
   return row;
 }
 
@@ -157,14 +167,15 @@ long long MeshBytes(vtkPolyData* mesh)
   return perPoint * mesh->GetNumberOfPoints() + 12LL * mesh->GetNumberOfPolys();
 }
 
-std::string Table(const std::vector<Row>& rows)
+std::string Table(const std::vector<Row>& rows, long long meshBytes)
 {
   std::ostringstream out;
   out << std::fixed;
   out << "| view | instances | window covered | mesh ms/frame | impostor ms/frame | speed-up | "
          "silhouette error | depth error (median) | colour RMSE | colour RMSE, mesh 3x3 "
-         "(the mesh's own) | samples/pixel |\n"
-      << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+         "(the mesh's own) | samples/pixel | depth texels | texture bytes (x mesh) |\n"
+      << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
+         "| ---: |\n";
   for (const Row& row : rows)
   {
     out << "| " << row.Name << " | " << row.Instances << " | " << std::setprecision(1)
@@ -173,7 +184,9 @@ std::string Table(const std::vector<Row>& rows)
         << row.MeshMilliseconds / std::max(row.ImpostorMilliseconds, 1e-9) << "x | "
         << std::setprecision(4) << row.Silhouette << " | " << row.Depth << " | " << row.Colour
         << " | " << row.ColourSupersampled << " (" << row.MeshColourSupersampled << ") | "
-        << std::setprecision(1) << row.Samples << " |\n";
+        << std::setprecision(1) << row.Samples << " | " << row.DepthResolution << "^2 | "
+        << row.Bytes << " (" << std::setprecision(3)
+        << static_cast<double>(row.Bytes) / std::max(meshBytes, 1LL) << ") |\n";
   }
   return out.str();
 }
@@ -207,6 +220,7 @@ std::string ReliefImpostorStudy::Study(const Options& options)
     const double nearest = instances == 1 ? 1.3 : (instances < 100 ? 3.5 : 2.0);
     ReliefScene::ViewField(
       renderer, half, Calibrate(window, renderer, half, options.FieldShare, nearest));
+    RestartAutomaticResolution(mappers.Impostor);
     Row row = Measure(window, renderer, mappers, options.Frames, meshFrames);
     row.Name = "a quarter of the window";
     row.Instances = instances;
@@ -222,6 +236,7 @@ std::string ReliefImpostorStudy::Study(const Options& options)
     {
       Use(renderer, mappers.Impostor);
       ReliefScene::ViewField(renderer, half, Calibrate(window, renderer, half, share, nearest));
+      RestartAutomaticResolution(mappers.Impostor);
       Row screen = Measure(window, renderer, mappers, options.Frames, meshFrames);
       std::ostringstream name;
       name << std::setprecision(3) << share << " of the window";
@@ -274,8 +289,23 @@ std::string ReliefImpostorStudy::Study(const Options& options)
       depths.Y.push_back(std::max(row.Depth, ReliefChart::LogFloor));
       colours.Y.push_back(std::max(row.Colour, ReliefChart::LogFloor));
     }
-    mappers.Impostor->GetImpostorFilter()->SetDepthResolution(256);
-    mappers.Impostor->GetImpostorFilter()->SetColourResolution(512);
+    // colours held uncompressed, at the resolution the view asks for
+    RestartAutomaticResolution(mappers.Impostor);
+    mappers.Impostor->SetCompressColours(false);
+    const Row uncompressed = Measure(window, renderer, mappers, options.Frames, options.Frames);
+    mappers.Impostor->SetCompressColours(true);
+    const Row compressed = Measure(window, renderer, mappers, options.Frames, options.Frames);
+    for (const Row* row : { &compressed, &uncompressed })
+    {
+      resolutionTable << "| " << row->DepthResolution << "^2 (automatic) | "
+                      << 2 * row->DepthResolution << "^2, "
+                      << (row == &compressed ? "compressed (default)" : "uncompressed") << " | "
+                      << std::setprecision(4) << row->Silhouette << " | " << row->Depth << " | "
+                      << row->Colour << " | " << std::setprecision(1)
+                      << row->ImpostorMilliseconds << " | " << row->Bytes << " | "
+                      << std::setprecision(2) << static_cast<double>(row->Bytes) / meshBytes
+                      << " |\n";
+    }
 
     // the searches, in the same view at the defaults
     const std::pair<const char*, int> searches[] = {
@@ -299,8 +329,12 @@ std::string ReliefImpostorStudy::Study(const Options& options)
   out << "ImpostorObject at resolution " << options.MeshResolution << ": "
       << object->GetNumberOfPolys() << " triangles, " << object->GetNumberOfPoints()
       << " points, " << meshBytes << " bytes of vertex and index buffers. The impostor: "
-      << "vtkOpenGLReliefImpostorMapper at its defaults (six orthographic views, depth 256^2, "
-      << "colour 512^2, MaximumMipmap). " << options.Width << "x" << options.Height
+      << "vtkOpenGLReliefImpostorMapper at its defaults (six orthographic views; "
+         "AutomaticResolution: depth texels per view side the power of two at or above the "
+         "pixels the box spans, 64^2 to 512^2, colour twice that; colours compressed (DXT1), "
+         "normals octahedral in two bytes; MaximumMipmap), its resolution started again from "
+         "the least for each scene. "
+      << options.Width << "x" << options.Height
       << ", one scene light, instances on a grid sharing one mapper, looked at from 40 "
          "degrees above; ms/frame are medians of "
       << options.Frames << " frames (" << options.SlowFrames
@@ -309,15 +343,22 @@ std::string ReliefImpostorStudy::Study(const Options& options)
          "than drawing the boxes), depth as a share of the object's size, colour RMSE over "
          "the window, also against the mesh supersampled 3x3 (what an antialiased camera "
          "sees), beside the mesh's own error against it.\n\n"
-      << "The impostor's textures: " << instanceRows.front().Bytes << " bytes, "
-      << std::setprecision(2) << static_cast<double>(instanceRows.front().Bytes) / meshBytes
-      << " times the mesh's buffers, made once for all instances.\n\n"
+      << "The impostor's textures, made once for all instances: "
+      << instanceRows.back().Bytes << " bytes for " << instanceRows.back().Instances
+      << " instances over a quarter of the window (" << std::setprecision(3)
+      << static_cast<double>(instanceRows.back().Bytes) / meshBytes
+      << " times the mesh's buffers), " << instanceRows.front().Bytes << " for "
+      << instanceRows.front().Instances << " (" << std::setprecision(3)
+      << static_cast<double>(instanceRows.front().Bytes) / meshBytes << " times).\n\n"
       << "### Instances\n\n"
-      << Table(instanceRows) << "\n### Cost against screen size\n\n" << Table(screenRows)
+      << Table(instanceRows, meshBytes) << "\n### Cost against screen size\n\n"
+      << Table(screenRows, meshBytes)
       << "\n### Search methods\n\nOne instance covering a quarter of the window.\n\n"
-      << Table(searchRows)
+      << Table(searchRows, meshBytes)
       << "\n### Error against texture resolution\n\nOne instance covering a quarter of the "
-         "window; depth texels per view side, colour twice as many.\n\n"
+         "window; depth texels per view side, colour twice as many, compressed unless said; the "
+         "last two rows: the resolution the view asks for, with and without compressed "
+         "colours.\n\n"
       << resolutionTable.str();
   if (!options.ImageDirectory.empty())
   {

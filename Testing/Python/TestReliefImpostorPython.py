@@ -135,6 +135,11 @@ class ImpostorMapperFromPython(unittest.TestCase):
         truth, _ = rendered(mesh)
         drawn, textures = rendered(impostor)
         self.assertTrue(impostor.GetDrawingImpostor())
+        # captured at the resolution its size on screen asks for: its box spans more than
+        # 128 of the 160 pixels, so 256 depth texels a side, colour twice that
+        self.assertTrue(impostor.GetAutomaticResolution())
+        self.assertEqual(impostor.GetImpostorFilter().GetDepthResolution(), 256)
+        self.assertEqual(impostor.GetImpostorFilter().GetColourResolution(), 512)
         self.assertGreater(textures, 0)
         self.assertEqual(impostor.GetTextureBytes(), 0)  # released with the window
         covered = truth.sum(axis=2) > 0

@@ -15,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <random>
 
 namespace
@@ -168,6 +170,50 @@ TEST(ReliefImpostorFrame, SixViewsPutEveryHitOnTheSphere)
       EXPECT_GT(hits, 600) << method.Name;
     }
   }
+  CurrentImpostor = nullptr;
+}
+
+TEST(ReliefImpostorFrame, AnOutlineIsShadedFromTheViewOfItsFace)
+{
+  // the top of a cube on a ground, hit from a tenth of a texel to two texels from its
+  // edges (nearer, either face is fair): a side view sees its wall there, as flat as the
+  // lid is from above, and the lid's point lies within its tolerance, a texel or two
+  // behind the wall; the lid's colour and normal are the view from above's (+z, view 4)
+  vtkNew<vtkReliefImpostorFilter> filter = Capture(ReliefImpostorMeshes::CubeOnGround(), 6, false);
+  const ImpostorViews views = ViewsOf(filter);
+  CurrentImpostor = &views;
+  ImpostorSearch = &reliefSearchMaximumMipmap;
+  const double* box = filter->GetBox();
+  const float texel = static_cast<float>(box[1] - box[0]) / 128.0f;
+  int hits = 0;
+  int wrong = 0;
+  for (int k = 0; k < 40; ++k)
+  {
+    const float inward = (0.1f + 0.05f * k) * texel;
+    for (const vec3 target : { vec3(0.5f - inward, 0.1f, 1.0f), vec3(-0.1f, 0.5f - inward, 1.0f),
+           vec3(-0.5f + inward, -0.2f, 1.0f) })
+    {
+      const vec3 origin = target + vec3(0.3f, 0.2f, 3.0f);
+      const ReliefImpostorSegment segment = reliefImpostorClip(origin,
+        normalize(target - origin), vec3(box[0], box[2], box[4]), vec3(box[1], box[3], box[5]),
+        0.0f);
+      const ReliefImpostorHit hit = reliefImpostorSearch(segment, 16, 8);
+      const vec3 point = mix(segment.entry, segment.exit, hit.share);
+      if (!hit.hit || std::abs(point.z - 1.0f) > 0.01f)
+      {
+        continue; // on the wall, within the field's skirt
+      }
+      ++hits;
+      const int view = reliefImpostorShadingView(segment, hit);
+      if (view != 4 && ++wrong <= 3)
+      {
+        ADD_FAILURE() << "the lid's point " << inward / texel << " texels from its edge is "
+                      << "shaded from view " << view;
+      }
+    }
+  }
+  EXPECT_GT(hits, 60);
+  EXPECT_EQ(wrong, 0) << "of " << hits << " hits on the lid";
   CurrentImpostor = nullptr;
 }
 

@@ -2,9 +2,10 @@
 // textures, one layer per view, and the reads the searches and the impostor frame make
 // through them (vtkReliefCommon.glsl's macros, on the selected view's layer).
 uniform sampler2DArray reliefImpostorDepths;   // the views' depths, 16 bits, clamped
-uniform sampler2DArray reliefImpostorPyramids; // MaximumMipmap's atlases, 16 bits
-uniform sampler2DArray reliefImpostorColours;  // premultiplied RGBA, mipmapped
-uniform sampler2DArray reliefImpostorNormals;  // model-space normals, mipmapped
+uniform sampler2DArray reliefImpostorPyramids; // MaximumMipmap's levels 1 up, 16 bits
+uniform sampler2DArray reliefImpostorColours;  // RGB, empty texels filled, mipmapped
+uniform sampler2DArray reliefImpostorNormals;  // octahedral, in the views' frames, mipmapped
+uniform mat4 reliefImpostorNormalFrames[RELIEF_IMPOSTOR_VIEWS]; // the views' frames to model
 uniform vec2 reliefTextureSize;                // depth texels per view side
 uniform mat4 reliefImpostorProjections[RELIEF_IMPOSTOR_VIEWS]; // model to the views
 uniform float reliefImpostorDepthRatios[RELIEF_IMPOSTOR_VIEWS]; // box depth / face size
@@ -51,13 +52,34 @@ vec4 reliefCellDepths(vec2 cell)
     texelFetch(reliefImpostorDepths, ivec3(high, layer), 0).r);
 }
 #endif
-// vtkMaximumMipmapFilter's atlas of each view, as vtkReliefSearchMethod describes it
+// vtkMaximumMipmapFilter's pyramid of each view, as vtkReliefSearchMethod describes it:
+// level 0, each cell's least corner depth, from the depths; the levels above from the
+// atlas's column right of level 0, which alone is uploaded
 uniform int reliefPyramidTop;
 uniform float reliefPyramidRows[32];
-#define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefImpostorPyramids, ivec3(ivec2(node) + \
-  (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), \
-  int(reliefImpostorLayer)), 0).r
+float reliefImpostorPyramidDepth(vec2 node, int level)
+{
+  if (level == 0)
+  {
+    vec4 corners = RELIEF_CELL_DEPTHS(node);
+    return min(min(corners.x, corners.y), min(corners.z, corners.w));
+  }
+  return texelFetch(reliefImpostorPyramids,
+    ivec3(ivec2(node) + ivec2(0, reliefPyramidRows[level]), int(reliefImpostorLayer)), 0).r;
+}
+#define RELIEF_PYRAMID_DEPTH(node, level) reliefImpostorPyramidDepth(vec2(node), level)
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
+
+// A normal from its octahedral coordinates (vtkOpenGLReliefImpostorMapper encodes them),
+// not normalized
+vec3 reliefImpostorOctahedralNormal(vec2 encoded)
+{
+  vec3 normal = vec3(encoded, 1.0 - abs(encoded.x) - abs(encoded.y));
+  float fold = max(-normal.z, 0.0);
+  normal.x += normal.x >= 0.0 ? -fold : fold;
+  normal.y += normal.y >= 0.0 ? -fold : fold;
+  return normal;
+}
 
 //VTK::Relief::Common
 //VTK::Relief::Search

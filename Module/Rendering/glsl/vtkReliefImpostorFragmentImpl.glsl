@@ -31,12 +31,10 @@
   float reliefColourLevel = log2(max(reliefPixelSize * reliefColourTexelsPerUnit, 1.0));
   vec3 reliefHitTexel = vec3(reliefHitUV.xy, float(reliefShadingView));
   vec4 reliefHitColour = textureLod(reliefImpostorColours, reliefHitTexel, reliefColourLevel);
-  reliefHitColour.rgb =
-    reliefHitColour.a > 0.0 ? reliefHitColour.rgb / reliefHitColour.a : vec3(1.0);
   vec3 reliefLitNormalVC = reliefImpostorNormalMatrix *
-    textureLod(reliefImpostorNormals, reliefHitTexel, reliefColourLevel).xyz;
-  // no normal there (an empty texel's): facing the viewer; a surface seen from behind is
-  // lit on the side seen
+    (mat3(reliefImpostorNormalFrames[reliefShadingView]) * reliefImpostorOctahedralNormal(
+      textureLod(reliefImpostorNormals, reliefHitTexel, reliefColourLevel).xy));
+  // a surface seen from behind is lit on the side seen
   reliefLitNormalVC = dot(reliefLitNormalVC, reliefLitNormalVC) > 1e-12 ?
     normalize(reliefLitNormalVC) : -reliefRayDirectionVC;
   reliefLitNormalVC = dot(reliefLitNormalVC, reliefRayDirectionVC) > 0.0 ?

@@ -208,24 +208,30 @@ ReliefImpostorHit reliefImpostorSearch(
 
 // The view to colour and light the hit from: of the views whose surface the hit lies on
 // (within two depth texels of it), the one that sees that surface most squarely, where its
-// field is least steep. The view whose search placed the hit need not be it: along an
-// edge, a side view's field slants between its texel rows (the bilinear field's skirt)
-// and may place the hit on the top face, where the side view's textures hold the side.
+// field is least steep, and nearest the hit, in texels, which parts views that see two
+// faces at an edge: a lid's point a texel from its rim lies a texel behind the wall a side
+// view sees there, flat too, and on the lid the view from above sees. The view whose
+// search placed the hit need not be it: along an edge, a side view's field slants between
+// its texel rows (the bilinear field's skirt) and may place the hit on the top face, where
+// the side view's textures hold the side.
 int reliefImpostorShadingView(ReliefImpostorSegment segment, ReliefImpostorHit hit)
 {
   int chosen = hit.view;
-  float flattest = 1e30f;
+  float best = 1e30f;
   for (int view = 0; view < RELIEF_IMPOSTOR_VIEWS; ++view)
   {
     RELIEF_IMPOSTOR_SELECT(view);
     vec3 point = reliefImpostorPointAt(reliefImpostorView(view, segment), hit.share);
     vec3 field = reliefImpostorField(point);
     vec2 size = RELIEF_DEPTH_SIZE;
-    float slope = RELIEF_IMPOSTOR_DEPTH_RATIO(view) * length(vec2(field.y, field.z));
-    if (point.z - field.x <= 2.0f / max(size.x, size.y) && field.x < 1.0f && slope < flattest)
+    float ratio = RELIEF_IMPOSTOR_DEPTH_RATIO(view);
+    float slope = ratio * length(vec2(field.y, field.z));
+    float texelsAway = abs(point.z - field.x) * ratio * max(size.x, size.y);
+    if (point.z - field.x <= 2.0f / max(size.x, size.y) && field.x < 1.0f &&
+      slope + texelsAway < best)
     {
       chosen = view;
-      flattest = slope;
+      best = slope + texelsAway;
     }
   }
   return chosen;
