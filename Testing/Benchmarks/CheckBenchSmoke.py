@@ -175,10 +175,16 @@ def check_impostors(text):
     if [row[1] for row in rows] != ["1", "4"]:
         fail("the impostor table lacks its instance rows: %s" % rows)
     for row in rows:
-        for cell in row[3:5] + row[6:9] + row[10:]:
+        for cell in row[3:5] + row[6:9] + row[10:11]:
             figure(cell.rstrip("x%"))
         if not figure(row[6]) < 1.0 or not figure(row[10]) > 0.0:
             fail("the impostor was not drawn: %s" % row)
+        # the capture's resolution, chosen by its size on screen, and its bytes
+        texels = int(figure(row[11].split("^", 1)[0]))
+        if texels not in (64, 128, 256, 512):
+            fail("the impostor's automatic resolution is not 64 to 512: %s" % row)
+        if not figure(row[12].split(" ", 1)[0]) > 0.0:
+            fail("the impostor's textures take no bytes: %s" % row)
 
 
 def check_automatic(text):
