@@ -7,6 +7,8 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
@@ -14,6 +16,7 @@
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
@@ -29,6 +32,7 @@
 #include "vtkScalarsToColors.h"
 #include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowMapBakerPass.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
@@ -226,6 +230,7 @@ void vtkOpenGLReliefImpostorMapper::SetCompressColours(bool compress)
   {
     this->CompressColours = compress;
     this->UploadedCaptureTime = 0; // uploaded again, in the other format
+    this->FailedCaptureTime = 0;   // which may succeed where this one failed
     this->Modified();
   }
 }
@@ -265,6 +270,20 @@ double vtkOpenGLReliefImpostorMapper::ScreenSpan(
   return std::max({ across, down, 0.0 });
 }
 
+bool vtkOpenGLReliefImpostorMapper::BakingShadows(vtkActor* actor)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
+  for (int k = 0; keys && keys->Has(passes) && k < keys->Length(passes); ++k)
+  {
+    if (vtkShadowMapBakerPass::SafeDownCast(keys->Get(passes, k)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 void vtkOpenGLReliefImpostorMapper::FollowScreenSize(vtkRenderer* ren, vtkActor* actor)
 {
   vtkReliefImpostorFilter* filter = this->ImpostorFilter;
@@ -273,7 +292,8 @@ void vtkOpenGLReliefImpostorMapper::FollowScreenSize(vtkRenderer* ren, vtkActor*
   {
     this->AutomaticResolution = false; // the user's own resolutions
   }
-  if (!this->AutomaticResolution)
+  // the shadow baker draws through the light's camera, which says nothing of the view's
+  if (!this->AutomaticResolution || BakingShadows(actor))
   {
     return;
   }
@@ -681,13 +701,13 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
     FillEmptyTexels(colour.data() + 3 * first, 3, coverage.data() + first, colourSize);
     FillEmptyTexels(normal.data() + 3 * first, 3, coverage.data() + first, colourSize);
   }
-  std::vector<unsigned char> colourBytes(3 * colourTexels);
+  std::vector<unsigned char> colourBytes(4 * colourTexels, 255);
   std::vector<signed char> octahedral(2 * colourTexels);
   for (size_t k = 0; k < colourTexels; ++k)
   {
     for (int c = 0; c < 3; ++c)
     {
-      colourBytes[3 * k + c] = static_cast<unsigned char>(
+      colourBytes[4 * k + c] = static_cast<unsigned char>(
         std::lround(255.0 * std::min(std::max(colour[3 * k + c], 0.0f), 1.0f)));
     }
     const double vector[3] = { normal[3 * k], normal[3 * k + 1], normal[3 * k + 2] };
@@ -700,13 +720,14 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
   }
   const bool compressed = this->CompressColours && GLEW_EXT_texture_compression_s3tc;
   if (!this->ColourTexture->Create2DArrayFromRaw(colourSize, colourSize, views,
-        compressed ? GL_COMPRESSED_RGB_S3TC_DXT1_EXT : GL_RGB8, GL_RGB, GL_UNSIGNED_BYTE,
-        compressed ? 0 : 3, colourBytes.data(), Texture::MIPMAPPED) ||
+        compressed ? GL_COMPRESSED_RGB_S3TC_DXT1_EXT : GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE,
+        compressed ? 0 : 4, colourBytes.data(), Texture::MIPMAPPED) ||
     !this->NormalTexture->Create2DArrayFromRaw(colourSize, colourSize, views, GL_RG8_SNORM,
       GL_RG, GL_BYTE, 2, octahedral.data(), Texture::MIPMAPPED))
   {
     vtkErrorMacro("The impostor's colour textures could not be made: lower the impostor "
-                  "filter's ColourResolution, or free GPU memory.");
+                  "filter's ColourResolution, free GPU memory, or turn CompressColours "
+                  "off.");
     return false;
   }
 

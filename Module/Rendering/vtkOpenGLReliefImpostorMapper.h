@@ -49,7 +49,8 @@ public:
   vtkTypeMacro(vtkOpenGLReliefImpostorMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The filter that captures the mesh, to configure it (views, projection, resolutions).
+  /// The filter that captures the mesh, to configure it (views, projection, resolutions:
+  /// setting those turns AutomaticResolution off).
   vtkReliefImpostorFilter* GetImpostorFilter();
 
   ///@{
@@ -104,9 +105,12 @@ public:
    * has spanned in any render (at least MinimumAutomaticResolution, at most
    * MaximumAutomaticResolution), its colour texels twice as many; they are raised, and the
    * mesh captured again, only when the impostor is drawn larger than its capture resolves.
-   * A field of small instances thus holds small textures, and a close-up sharp ones. Off:
-   * the filter's resolutions are kept as set. Setting the filter's DepthResolution or
-   * ColourResolution yourself turns it off.
+   * A field of small instances thus holds small textures, and a close-up sharp ones (the
+   * first frame of actors at many distances may capture once per power of two). Shadow
+   * maps' renders do not count. Off: the filter's resolutions are kept as set. Setting the
+   * filter's DepthResolution or ColourResolution yourself, to other values than this
+   * mapper last gave them, turns it off; to pin the resolution this mapper chose, turn it
+   * off.
    */
   void SetAutomaticResolution(bool automatic);
   vtkGetMacro(AutomaticResolution, bool);
@@ -118,8 +122,9 @@ public:
   ///@{
   /**
    * On (default): the colours are held compressed where the GL can (S3TC DXT1: half a
-   * byte a texel, a sixth of 8-bit RGB), compressed by the GL on upload. Off: 8 bits a
-   * channel. Normals are held as two signed bytes (octahedral) either way.
+   * byte a texel, an eighth of 8-bit RGBA), compressed by the GL on upload. Off, or where
+   * the GL has no S3TC: 8-bit RGBA. Normals are held as two signed bytes (octahedral)
+   * either way.
    */
   void SetCompressColours(bool compress);
   vtkGetMacro(CompressColours, bool);
@@ -182,6 +187,8 @@ protected:
   bool UpdateImpostor(vtkRenderer* ren, vtkActor* actor);
   /// AutomaticResolution: raises the capture's resolutions to what `actor` needs on screen.
   void FollowScreenSize(vtkRenderer* ren, vtkActor* actor);
+  /// Whether `actor` is drawn into a shadow map (vtkShadowMapBakerPass).
+  static bool BakingShadows(vtkActor* actor);
   /// The most pixels across that the box of `actor` spans in `ren`'s viewport.
   static double ScreenSpan(const double bounds[6], vtkRenderer* ren, vtkActor* actor);
   /// The capture's textures on the GPU of `window`; false where one cannot be made.

@@ -269,6 +269,7 @@ std::string ReliefImpostorStudy::Study(const Options& options)
     const double half = ReliefScene::AddField(renderer, mappers.Impostor, 1, Spacing);
     ReliefScene::ViewField(
       renderer, half, Calibrate(window, renderer, half, options.FieldShare, 1.3));
+    mappers.Impostor->AutomaticResolutionOff();
     for (int resolution : options.DepthResolutions)
     {
       mappers.Impostor->GetImpostorFilter()->SetDepthResolution(resolution);

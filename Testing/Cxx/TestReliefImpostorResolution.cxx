@@ -105,18 +105,37 @@ int TestReliefImpostorResolution(int, char*[])
   window->Render();
   const std::vector<unsigned char> plainPixels = ReliefScene::Pixels(window);
   const vtkIdType plainBytes = mapper->GetTextureBytes();
+  // over the pixels the sphere covers (the background is black in both)
   double squares = 0.0;
-  for (size_t k = 0; k < plainPixels.size(); ++k)
+  size_t covered = 0;
+  for (size_t k = 0; k + 2 < plainPixels.size(); k += 3)
   {
-    const double difference = (compressedPixels[k] - plainPixels[k]) / 255.0;
-    squares += difference * difference;
+    if (plainPixels[k] + plainPixels[k + 1] + plainPixels[k + 2] == 0)
+    {
+      continue;
+    }
+    ++covered;
+    for (size_t c = k; c < k + 3; ++c)
+    {
+      const double difference = (compressedPixels[c] - plainPixels[c]) / 255.0;
+      squares += difference * difference;
+    }
   }
-  const double rmse = std::sqrt(squares / std::max<size_t>(plainPixels.size(), 1));
+  const double rmse = std::sqrt(squares / std::max<size_t>(3 * covered, 1));
+  check(covered > 10000, "the sphere covers the window's middle");
   std::cout << "colours: " << compressedBytes << " bytes compressed, " << plainBytes
             << " plain; RMSE between their pictures " << rmse << "\n";
-  check(plainBytes - compressedBytes > 2 * compressedBytes / 3,
-    "compressed colours take far fewer bytes");
-  check(rmse < 0.01, "compressed colours look like the plain ones");
+  // colours at 512^2 with mipmaps: 8.4 MB as RGBA, 1 MB as DXT1; a GL without S3TC holds
+  // them as RGBA either way
+  if (compressedBytes == plainBytes)
+  {
+    std::cout << "this GL has no S3TC: colours are not compressed\n";
+  }
+  else
+  {
+    check(plainBytes - compressedBytes > 7000000, "compressed colours take far fewer bytes");
+  }
+  check(rmse < 0.02, "compressed colours look like the plain ones"); // 0.010 measured
   mapper->CompressColoursOn();
 
   // the user's own resolution is kept, and turns AutomaticResolution off
@@ -131,5 +150,27 @@ int TestReliefImpostorResolution(int, char*[])
   check(filter->GetDepthResolution() == least, "turning it on again starts from the least");
 
   mapper->ReleaseGraphicsResources(window);
+
+  // shadow maps: the baker draws through the spotlight's camera, which frames the sphere
+  // large (about 370 of 400 pixels); the capture keeps to what the view needs
+  vtkNew<vtkRenderWindow> shadowWindow;
+  shadowWindow->SetSize(Size, Size);
+  shadowWindow->SetMultiSamples(0);
+  vtkNew<vtkRenderer> shadowRenderer;
+  shadowWindow->AddRenderer(shadowRenderer);
+  ReliefScene::AddSpotlight(shadowRenderer);
+  ReliefScene::UseShadowMaps(shadowRenderer);
+  vtkNew<vtkOpenGLReliefImpostorMapper> shadowed;
+  shadowed->SetInputConnection(elevation->GetOutputPort());
+  vtkNew<vtkActor> shadowedActor;
+  shadowedActor->SetMapper(shadowed);
+  shadowRenderer->AddActor(shadowedActor);
+  Place(shadowRenderer, 60.0);
+  shadowWindow->Render();
+  std::cout << "under shadow maps, far: depth " << shadowed->GetImpostorFilter()->GetDepthResolution()
+            << "^2\n";
+  check(shadowed->GetImpostorFilter()->GetDepthResolution() == least,
+    "the shadow baker's camera does not raise the resolution");
+  shadowed->ReleaseGraphicsResources(shadowWindow);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
