@@ -52,22 +52,18 @@ vtkStandardNewMacro(vtkOpenGLReliefImpostorMapper);
 
 namespace
 {
-// View `view`'s frame for normals, row major: x along the next axis after the view's, z
-// out of its face (toward what it sees), a rotation.
-void NormalFrame(int view, int views, double frame[3][3])
+// View `view`'s frame for normals, a rotation, as a row-major 4x4 matrix from the frame to
+// model axes: x along the next axis after the view's, z out of its face (toward what it
+// sees).
+void NormalFrame(int view, int views, double frame[16])
 {
   const int axis = views == 1 ? 2 : view / 2;
   const double sign = views == 1 || view % 2 == 0 ? 1.0 : -1.0;
-  for (int row = 0; row < 3; ++row)
-  {
-    for (int column = 0; column < 3; ++column)
-    {
-      frame[row][column] = 0.0;
-    }
-  }
-  frame[(axis + 1) % 3][0] = 1.0;
-  frame[(axis + 2) % 3][1] = sign;
-  frame[axis][2] = sign;
+  std::fill(frame, frame + 16, 0.0);
+  frame[4 * ((axis + 1) % 3)] = 1.0;
+  frame[4 * ((axis + 2) % 3) + 1] = sign;
+  frame[4 * axis + 2] = sign;
+  frame[15] = 1.0;
 }
 
 // A unit vector's octahedral coordinates in [-1, 1]^2 (Cigolle et al. 2014, "A survey of
@@ -193,6 +189,24 @@ void SetMatrixUniform(vtkShaderProgram* program, const char* name, vtkMatrix4x4*
   program->SetUniformMatrix(name, transposed);
 }
 
+// `count` row-major 4x4 matrices as the GLSL mat4 array uniform `name`, column-major.
+void SetMatrixArrayUniform(
+  vtkShaderProgram* program, const char* name, const double (*matrices)[16], int count)
+{
+  std::vector<float> columns(16 * static_cast<size_t>(count));
+  for (int k = 0; k < count; ++k)
+  {
+    for (int row = 0; row < 4; ++row)
+    {
+      for (int column = 0; column < 4; ++column)
+      {
+        columns[16 * k + 4 * column + row] = static_cast<float>(matrices[k][4 * row + column]);
+      }
+    }
+  }
+  program->SetUniformMatrix4x4v(name, count, columns.data());
+}
+
 // One layer of `image` (a slice of the capture), as it is laid out in memory.
 vtkIdType LayerTexels(vtkImageData* image)
 {
@@ -217,10 +231,7 @@ void vtkOpenGLReliefImpostorMapper::SetAutomaticResolution(bool automatic)
   if (automatic)
   {
     // from the least, raised by the next renders as they need
-    this->AppliedDepthResolution = MinimumAutomaticResolution;
-    this->AppliedColourResolution = 2 * MinimumAutomaticResolution;
-    this->ImpostorFilter->SetDepthResolution(this->AppliedDepthResolution);
-    this->ImpostorFilter->SetColourResolution(this->AppliedColourResolution);
+    this->ApplyResolution(MinimumAutomaticResolution);
   }
 }
 
@@ -288,7 +299,7 @@ void vtkOpenGLReliefImpostorMapper::FollowScreenSize(vtkRenderer* ren, vtkActor*
 {
   vtkReliefImpostorFilter* filter = this->ImpostorFilter;
   if (filter->GetDepthResolution() != this->AppliedDepthResolution ||
-    filter->GetColourResolution() != this->AppliedColourResolution)
+    filter->GetColourResolution() != 2 * this->AppliedDepthResolution)
   {
     this->AutomaticResolution = false; // the user's own resolutions
   }
@@ -305,11 +316,15 @@ void vtkOpenGLReliefImpostorMapper::FollowScreenSize(vtkRenderer* ren, vtkActor*
   }
   if (wanted > this->AppliedDepthResolution)
   {
-    this->AppliedDepthResolution = wanted;
-    this->AppliedColourResolution = 2 * wanted;
-    filter->SetDepthResolution(this->AppliedDepthResolution);
-    filter->SetColourResolution(this->AppliedColourResolution);
+    this->ApplyResolution(wanted);
   }
+}
+
+void vtkOpenGLReliefImpostorMapper::ApplyResolution(int depthResolution)
+{
+  this->AppliedDepthResolution = depthResolution;
+  this->ImpostorFilter->SetDepthResolution(depthResolution);
+  this->ImpostorFilter->SetColourResolution(2 * depthResolution);
 }
 
 vtkOpenGLReliefImpostorMapper::~vtkOpenGLReliefImpostorMapper() = default;
@@ -677,27 +692,28 @@ bool vtkOpenGLReliefImpostorMapper::UploadTextures(vtkOpenGLRenderWindow* window
   std::vector<float> coverage(colourTexels);
   std::vector<float> colour(3 * colourTexels);
   std::vector<float> normal(3 * colourTexels);
-  for (size_t k = 0; k < colourTexels; ++k)
-  {
-    const vtkIdType id = static_cast<vtkIdType>(k);
-    coverage[k] = static_cast<float>(rgba->GetComponent(id, 3) / 255.0);
-    double model[3] = { 0.0, 0.0, 0.0 };
-    if (normals)
-    {
-      normals->GetTuple(id, model);
-    }
-    double frame[3][3];
-    NormalFrame(static_cast<int>(k / layerTexels), views, frame);
-    for (int c = 0; c < 3; ++c)
-    {
-      colour[3 * k + c] = static_cast<float>(rgba->GetComponent(id, c) / 255.0);
-      normal[3 * k + c] = static_cast<float>(
-        frame[0][c] * model[0] + frame[1][c] * model[1] + frame[2][c] * model[2]);
-    }
-  }
   for (int view = 0; view < views; ++view)
   {
+    double frame[16];
+    NormalFrame(view, views, frame);
     const size_t first = static_cast<size_t>(view) * layerTexels;
+    for (size_t k = first; k < first + layerTexels; ++k)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(k);
+      coverage[k] = static_cast<float>(rgba->GetComponent(id, 3) / 255.0);
+      double model[3] = { 0.0, 0.0, 0.0 };
+      if (normals)
+      {
+        normals->GetTuple(id, model);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        colour[3 * k + c] = static_cast<float>(rgba->GetComponent(id, c) / 255.0);
+        // the frame's transpose: model axes to the frame
+        normal[3 * k + c] = static_cast<float>(
+          frame[c] * model[0] + frame[4 + c] * model[1] + frame[8 + c] * model[2]);
+      }
+    }
     FillEmptyTexels(colour.data() + 3 * first, 3, coverage.data() + first, colourSize);
     FillEmptyTexels(normal.data() + 3 * first, 3, coverage.data() + first, colourSize);
   }
@@ -992,41 +1008,19 @@ void vtkOpenGLReliefImpostorMapper::SetMapperShaderParameters(
     const int sizes[2] = { this->DepthSize, this->DepthSize };
     method.SetUniforms(program, sizes);
   }
-  // column-major, as GLSL reads its matrices
-  std::vector<float> projections(16 * static_cast<size_t>(this->Views));
-  for (int view = 0; view < this->Views; ++view)
-  {
-    for (int row = 0; row < 4; ++row)
-    {
-      for (int column = 0; column < 4; ++column)
-      {
-        projections[16 * view + 4 * column + row] =
-          static_cast<float>(this->Projections[view][4 * row + column]);
-      }
-    }
-  }
-  program->SetUniformMatrix4x4v("reliefImpostorProjections", this->Views, projections.data());
+  SetMatrixArrayUniform(program, "reliefImpostorProjections", this->Projections, this->Views);
   float ratios[6];
   for (int view = 0; view < this->Views; ++view)
   {
     ratios[view] = static_cast<float>(this->GetDepthRatio(view));
   }
   program->SetUniform1fv("reliefImpostorDepthRatios", this->Views, ratios);
-  std::vector<float> frames(16 * static_cast<size_t>(this->Views), 0.0f); // column-major
+  double frames[6][16];
   for (int view = 0; view < this->Views; ++view)
   {
-    double frame[3][3];
-    NormalFrame(view, this->Views, frame);
-    for (int row = 0; row < 3; ++row)
-    {
-      for (int column = 0; column < 3; ++column)
-      {
-        frames[16 * view + 4 * column + row] = static_cast<float>(frame[row][column]);
-      }
-    }
-    frames[16 * view + 15] = 1.0f;
+    NormalFrame(view, this->Views, frames[view]);
   }
-  program->SetUniformMatrix4x4v("reliefImpostorNormalFrames", this->Views, frames.data());
+  SetMatrixArrayUniform(program, "reliefImpostorNormalFrames", frames, this->Views);
   const float low[3] = { static_cast<float>(this->CaptureBox[0]),
     static_cast<float>(this->CaptureBox[2]), static_cast<float>(this->CaptureBox[4]) };
   const float high[3] = { static_cast<float>(this->CaptureBox[1]),

@@ -187,6 +187,8 @@ protected:
   bool UpdateImpostor(vtkRenderer* ren, vtkActor* actor);
   /// AutomaticResolution: raises the capture's resolutions to what `actor` needs on screen.
   void FollowScreenSize(vtkRenderer* ren, vtkActor* actor);
+  /// Gives the filter `depthResolution` and twice it for colour, as AutomaticResolution.
+  void ApplyResolution(int depthResolution);
   /// Whether `actor` is drawn into a shadow map (vtkShadowMapBakerPass).
   static bool BakingShadows(vtkActor* actor);
   /// The most pixels across that the box of `actor` spans in `ren`'s viewport.
@@ -216,8 +218,7 @@ protected:
   bool AutomaticResolution = true;
   bool CompressColours = true;
   int DisplayMode = SHADED;
-  int AppliedDepthResolution = 0;  // the resolutions AutomaticResolution gave the filter
-  int AppliedColourResolution = 0;
+  int AppliedDepthResolution = 0; // AutomaticResolution's for the filter; colour twice it
 
   vtkNew<vtkReliefImpostorFilter> ImpostorFilter;
   vtkNew<vtkPolyData> Box; // drawn in place of the mesh

@@ -5,6 +5,7 @@
 // take its frame with new ones, report a block's warning once for all blocks, and
 // release the GL objects of the block mappers a new input replaces.
 // No baseline image: renders are compared.
+#include "ReliefChecks.h"
 #include "ReliefEventRecorder.h"
 #include "ReliefLiveGLObjects.h"
 #include "ReliefScene.h"
@@ -62,14 +63,7 @@ int LiveTextures(vtkRenderWindow* window)
 
 int TestCompositeReliefMapper(int, char*[])
 {
-  int failures = 0;
-  auto check = [&failures](bool condition, const std::string& what) {
-    if (!condition)
-    {
-      std::cerr << "FAILED: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
   vtkSmartPointer<vtkImageData> heights = ReliefScene::HeightImage(64, 64, [](int i, int j) {
     return static_cast<float>(
       std::sin(2.0 * vtkMath::Pi() * i / 16.0) * std::sin(2.0 * vtkMath::Pi() * j / 16.0));
@@ -187,5 +181,5 @@ int TestCompositeReliefMapper(int, char*[])
   window->Render();
   composite->ReleaseGraphicsResources(window);
   check(LiveTextures(window) == texturesWithoutRelief, "released with the window's resources");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

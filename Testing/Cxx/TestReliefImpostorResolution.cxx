@@ -3,6 +3,7 @@
 // drawn larger, never lowered by drawing smaller), the user's own resolutions are kept,
 // and compressed colours take a sixth of their bytes, with pictures close to the
 // uncompressed ones.
+#include "ReliefChecks.h"
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -40,14 +41,7 @@ void Place(vtkRenderer* renderer, double distance)
 
 int TestReliefImpostorResolution(int, char*[])
 {
-  int failures = 0;
-  auto check = [&failures](bool condition, const std::string& what) {
-    if (!condition)
-    {
-      std::cerr << "Failed: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
 
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(64);
@@ -172,5 +166,5 @@ int TestReliefImpostorResolution(int, char*[])
   check(shadowed->GetImpostorFilter()->GetDepthResolution() == least,
     "the shadow baker's camera does not raise the resolution");
   shadowed->ReleaseGraphicsResources(shadowWindow);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -6,6 +6,7 @@
 // their hull's lifts are lifted as vtkLocalQuadricFilter lifts them, that a grid search falls
 // back to LinearBinary with one warning, and that a mesh without texture coordinates gives one
 // error and draws plainly.
+#include "ReliefChecks.h"
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 
@@ -78,14 +79,7 @@ double MeanDifference(const std::vector<unsigned char>& a, const std::vector<uns
 
 int TestReliefQuadricSilhouette(int argc, char* argv[])
 {
-  int failures = 0;
-  auto check = [&failures](bool condition, const char* what) {
-    if (!condition)
-    {
-      std::cerr << "ERROR: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
 
   // the outline moves: the flat frame covers pixels the quadric frame carves away
   auto sphere = ReliefScene::Sphere(24);
@@ -226,5 +220,5 @@ int TestReliefQuadricSilhouette(int argc, char* argv[])
   }
 
   const int image = vtkRegressionTestImage(window);
-  return failures == 0 && image == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() && image == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -4,6 +4,7 @@
 // method or footprint shading rebuilds the shader, uniform-only setters modify the
 // mapper and rebuild neither its shader nor its buffers, and released graphics
 // resources come back.
+#include "ReliefChecks.h"
 #include "ReliefScene.h"
 
 #include "vtkActor.h"
@@ -87,14 +88,7 @@ int TestReliefSampleCount(int, char*[])
   mapper->FootprintShadingOff(); // first the view ray's own search
   renderer->AddActor(ReliefScene::ReliefActor(mapper, "bricks_color.png"));
   ReliefScene::ViewSquare(renderer, 45.0);
-  int failures = 0;
-  auto check = [&failures](bool condition, const char* what) {
-    if (!condition)
-    {
-      std::cerr << "Sample count check failed: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
 
   // the default, Automatic: rays 50 texels long, about 10 pixels on screen, stepped over
   // the cone map; with a tolerance wider than that, no search: a secant step, 3 samples
@@ -170,5 +164,5 @@ int TestReliefSampleCount(int, char*[])
   renderer->ReleaseGraphicsResources(window);
   Counts rebuilt = SampleCounts(window);
   check(rebuilt.Mean == linearBinary.Mean, "textures and shaders come back after release");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

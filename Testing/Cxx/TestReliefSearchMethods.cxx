@@ -2,6 +2,7 @@
 // methods back and forth leaks no shader programs or textures; an acceleration image
 // that does not fit is reported once and the search falls back to LinearBinary; a
 // height map larger than OpenGL takes is reported with the limit.
+#include "ReliefChecks.h"
 #include "ReliefEventRecorder.h"
 #include "ReliefLiveGLObjects.h"
 #include "ReliefScene.h"
@@ -38,14 +39,7 @@ long RedSum(vtkRenderWindow* window)
 
 int TestReliefSearchMethods(int, char*[])
 {
-  int failures = 0;
-  auto check = [&failures](bool condition, const char* what) {
-    if (!condition)
-    {
-      std::cerr << "FAILED: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
 
   vtkNew<vtkRenderWindow> window;
   auto mapper = ReliefScene::ShowThinFeatures(window, 160, 120, 60.0, vtkOpenGLReliefMapper::LINEAR);
@@ -208,5 +202,5 @@ int TestReliefSearchMethods(int, char*[])
   check(messages->Count(vtkCommand::ErrorEvent) == 1 &&
       messages->AnyMessageContains(std::to_string(limit)),
     "a height map beyond the GL limit is one error naming the limit");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

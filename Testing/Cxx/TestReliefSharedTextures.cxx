@@ -5,6 +5,7 @@
 // acceleration image, built or precomputed, is shared as well; a bad height map shared
 // by four is reported once; and the textures go with the last mapper that releases them.
 // No baseline image: renders are compared.
+#include "ReliefChecks.h"
 #include "ReliefEventRecorder.h"
 #include "ReliefLiveGLObjects.h"
 #include "ReliefScene.h"
@@ -48,14 +49,7 @@ int LiveTextures(vtkRenderWindow* window)
 
 int TestReliefSharedTextures(int, char*[])
 {
-  int failures = 0;
-  auto check = [&failures](bool condition, const std::string& what) {
-    if (!condition)
-    {
-      std::cerr << "FAILED: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
 
   vtkNew<vtkRenderWindow> window;
   auto renderer = ReliefScene::LitRenderer(window, 240, 240);
@@ -234,5 +228,5 @@ int TestReliefSharedTextures(int, char*[])
             << texturesAfterRelease << "\n";
   check(texturesAfterRelease == texturesWithoutRelief, "no texture left in the context");
   check(messages->Events.empty(), "silent throughout");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -7,6 +7,7 @@
 // filter's per-texel normals (central differences) light the relief nearly alike, and
 // tilted ones do not, so the normal map is what is read when there is one. No baseline
 // image: renders are compared.
+#include "ReliefChecks.h"
 #include "ReliefEventRecorder.h"
 #include "ReliefScene.h"
 
@@ -72,14 +73,7 @@ Difference Compare(const std::vector<unsigned char>& a, const std::vector<unsign
 
 int TestReliefTextureFormats(int, char*[])
 {
-  int failures = 0;
-  auto check = [&failures](bool condition, const std::string& what) {
-    if (!condition)
-    {
-      std::cerr << "FAILED: " << what << "\n";
-      ++failures;
-    }
-  };
+  ReliefChecks check;
 
   vtkNew<vtkRenderWindow> window;
   auto renderer = ReliefScene::LitRenderer(window, 200, 150);
@@ -175,5 +169,5 @@ int TestReliefTextureFormats(int, char*[])
   mapper->ReleaseGraphicsResources(window);
   check(mapper->GetTextureBytes() == 0, "no bytes after ReleaseGraphicsResources");
   check(messages->Events.empty(), "silent throughout");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return check.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
