@@ -117,7 +117,7 @@ int main(int argc, char* argv[])
       [](vtkRenderWindow* w) { ReliefScene::ShowInterpenetration(w, 800, 400); } },
     { "search_methods",
       "thin features: Linear, LinearBinary, Secant, ExactDDA, SafetyRadius, ConeStep, "
-      "MaximumMipmap, Automatic at 45 (top) and 80 degrees",
+      "MaximumMipmap, Automatic, RobustBinary, SlopeMipmap at 45 (top) and 80 degrees",
       [](vtkRenderWindow* w) { ReliefScene::ShowSearchMethods(w, 1600, 400); } },
     { "path_features",
       "vector detail (vtkOpenGLPathFeatureMapper): mortar joints meeting at ends, a crack "

@@ -40,6 +40,7 @@
 #include "vtkReliefGeometryImpl.h"
 #include "vtkReliefGridSearch.h"
 #include "vtkReliefSafetySearch.h"
+#include "vtkReliefSlopeSearch.h"
 #include "vtkReliefSearch.h"
 #include "vtkReliefTangentBasis.h"
 #include "vtkReliefTangentFrame.h"
@@ -888,7 +889,7 @@ std::string vtkOpenGLReliefMapper::GetSearchDefines()
 std::string vtkOpenGLReliefMapper::GetSearchSource()
 {
   return std::string(vtkReliefSearch) + vtkReliefGridSearch + vtkReliefSafetySearch +
-    vtkReliefConeSearch + vtkReliefAutomaticSearch;
+    vtkReliefSlopeSearch + vtkReliefConeSearch + vtkReliefAutomaticSearch;
 }
 
 void vtkOpenGLReliefMapper::InsertReliefGeometryShader(vtkShader* geometryShader)

@@ -72,7 +72,9 @@ public:
     SAFETY_RADIUS = 4,
     CONE_STEP = 5,
     MAXIMUM_MIPMAP = 6,
-    AUTOMATIC = 7
+    AUTOMATIC = 7,
+    ROBUST_BINARY = 8,
+    SLOPE_MIPMAP = 9
   };
 
   ///@{
@@ -100,12 +102,21 @@ public:
    *   exactly (Baboud and Decoret 2006 s3.4). Exact at SafetyRadiusTolerance 0; a
    *   tolerance e > 0 buys larger jumps for features missed only where the ray passes
    *   within e of their surface.
+   * - RobustBinary: SafetyRadius as Baboud and Decoret (2006, s3.4) wrote it: a radius
+   *   of 0 is clamped to its own cell, whose exit alone is tested, so a ray may also
+   *   pass through one such cell unnoticed. At SafetyRadiusTolerance 0 it costs as
+   *   much as SafetyRadius; from about 0.05 its cost no longer grows with the height
+   *   map's resolution (Documentation/methods.md).
    * - ConeStep: relaxed cone stepping (Policarpo and Oliveira 2007) with cones valid
    *   for the bilinear field (vtkConeStepMapFilter), a binary refinement, then cells
    *   intersected exactly. Exact.
    * - MaximumMipmap: skips blocks of cells the ray passes over, using a pyramid of
    *   highest points (Tevs et al. 2008), then intersects cells exactly. Exact; about
    *   log n steps.
+   * - SlopeMipmap: MaximumMipmap whose nodes also bound the slopes under them
+   *   (vtkSlopeMipmapFilter), so that one node read may also prove that the ray cannot
+   *   come down to the field before the node's exit, or meets it at most once there.
+   *   Exact; the fewest samples at grazing angles (Documentation/methods.md).
    * The exact methods read the full-resolution field and ignore the step counts.
    * Changing the method rebuilds the shader once.
    */
@@ -119,6 +130,8 @@ public:
   void SetSearchMethodToConeStep() { this->SetSearchMethod(CONE_STEP); }
   void SetSearchMethodToMaximumMipmap() { this->SetSearchMethod(MAXIMUM_MIPMAP); }
   void SetSearchMethodToAutomatic() { this->SetSearchMethod(AUTOMATIC); }
+  void SetSearchMethodToRobustBinary() { this->SetSearchMethod(ROBUST_BINARY); }
+  void SetSearchMethodToSlopeMipmap() { this->SetSearchMethod(SLOPE_MIPMAP); }
   const char* GetSearchMethodAsString();
   static const char* GetSearchMethodAsString(int method);
   ///@}
@@ -144,7 +157,8 @@ public:
 
   /**
    * A new instance of the filter that makes the acceleration image `method` reads
-   * (vtkSafetyRadiusFilter, vtkConeStepMapFilter or vtkMaximumMipmapFilter), or nullptr
+   * (vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkMaximumMipmapFilter or
+   * vtkSlopeMipmapFilter), or nullptr
    * for a method that reads none. The caller owns it.
    */
   VTK_NEWINSTANCE static vtkReliefAccelerationFilter* NewAccelerationFilter(int method);

@@ -15,6 +15,7 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
+#include "vtkSlopeMipmapFilter.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
@@ -42,7 +43,7 @@ vtkIdType MipmappedBytes(int width, int height, int texelBytes)
   return bytes * texelBytes;
 }
 
-// A repeating 2D texture of `values` (one or two components) in `internalFormat`, read
+// A repeating 2D texture of `values` (one to three components) in `internalFormat`, read
 // with `filter`: vtkTextureObject::LinearMipmapLinear (trilinear, its mipmaps made),
 // Linear (bilinear, at full resolution) or Nearest (texel by texel: the acceleration
 // images, one texel per cell, repeating as the height map does).
@@ -56,7 +57,7 @@ bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
   // method's image would be read with another's layout
   texture->ResetFormatAndType();
   texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(components == 1 ? GL_RED : GL_RG);
+  texture->SetFormat(components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGB);
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
   texture->SetMinificationFilter(filter);
@@ -93,6 +94,28 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
     }
   });
   return codes;
+}
+
+// The three floats a node of vtkSlopeMipmapFilter's atlas is uploaded as: its least depth
+// and its two slope boxes, each packed in one float (EncodeSlopes, rounded outward).
+vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(vtkImageData* atlas)
+{
+  vtkDataArray* nodes = atlas->GetPointData()->GetScalars();
+  auto packed = vtkSmartPointer<vtkFloatArray>::New();
+  packed->SetNumberOfComponents(3);
+  packed->SetNumberOfTuples(nodes->GetNumberOfTuples());
+  vtkSMPTools::For(0, nodes->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType node = begin; node < end; ++node)
+    {
+      double values[5]; // least depth, dD/dx bounds, dD/dy bounds
+      nodes->GetTuple(node, values);
+      float* texel = packed->GetPointer(3 * node);
+      texel[0] = static_cast<float>(values[0]);
+      texel[1] = vtkSlopeMipmapFilter::EncodeSlopes(values[1], values[2]);
+      texel[2] = vtkSlopeMipmapFilter::EncodeSlopes(values[3], values[4]);
+    }
+  });
+  return packed;
 }
 
 // Runs `algorithm` with its errors and warnings the reporter's: a shared texture is made
@@ -376,9 +399,15 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   {
     values = EncodeConeMap(this->Image); // rounded conservatively
   }
+  else if (method.Encoding == vtkReliefSearchMethod::SLOPE_CODES)
+  {
+    values = EncodeSlopeMipmap(this->Image);
+  }
+  const int components = values->GetNumberOfComponents();
   const unsigned int internalFormat = cones ? GL_RG8
-    : values->GetNumberOfComponents() == 1  ? GL_R32F
-                                            : GL_RG32F;
+    : components == 1                       ? GL_R32F
+    : components == 2                       ? GL_RG32F
+                                            : GL_RGB32F;
   if (!UploadTexture(this->Texture, window, this->Image->GetDimensions(), values, internalFormat,
         vtkTextureObject::Nearest))
   {

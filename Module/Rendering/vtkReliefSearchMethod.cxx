@@ -5,6 +5,7 @@
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkSafetyRadiusFilter.h"
 #include "vtkShaderProgram.h"
+#include "vtkSlopeMipmapFilter.h"
 
 #include <cctype>
 #include <iterator>
@@ -32,7 +33,8 @@ void SetConeUniforms(vtkShaderProgram* program, const int reliefSize[2])
   program->SetUniform2f("reliefConeRange", range);
 }
 
-// Where each level of vtkMaximumMipmapFilter's atlas starts, and the top level.
+// Where each level of vtkMaximumMipmapFilter's atlas (vtkSlopeMipmapFilter's too) starts, and
+// the top level.
 void SetPyramidUniforms(vtkShaderProgram* program, const int reliefSize[2])
 {
   constexpr int MaximumLevels = 32; // reliefPyramidRows' size in vtkReliefGridSearch.glsl
@@ -68,6 +70,10 @@ const vtkReliefSearchMethod Methods[] = {
     Method::FLOAT_TEXELS, &NewFilter<vtkMaximumMipmapFilter>, nullptr, &SetPyramidUniforms },
   { vtkOpenGLReliefMapper::AUTOMATIC, "Automatic", "reliefSearchAutomatic", false,
     Method::CONE_BYTES, &NewFilter<vtkConeStepMapFilter>, nullptr, &SetConeUniforms },
+  { vtkOpenGLReliefMapper::ROBUST_BINARY, "RobustBinary", "reliefSearchRobustBinary", false,
+    Method::FLOAT_TEXELS, &NewFilter<vtkSafetyRadiusFilter>, &SetErrorTolerance, nullptr },
+  { vtkOpenGLReliefMapper::SLOPE_MIPMAP, "SlopeMipmap", "reliefSearchSlopeMipmap", false,
+    Method::SLOPE_CODES, &NewFilter<vtkSlopeMipmapFilter>, nullptr, &SetPyramidUniforms },
 };
 
 // Automatic where rays curve: fixed steps sized to the screen tolerance, no cone map.

@@ -30,7 +30,8 @@ public:
   {
     NO_ACCELERATION, ///< the method reads the depth texture only
     FLOAT_TEXELS,    ///< the filter's floats as they are: R32F or RG32F
-    CONE_BYTES       ///< vtkConeStepMapFilter::EncodeCone's two bytes a cell: RG8
+    CONE_BYTES,      ///< vtkConeStepMapFilter::EncodeCone's two bytes a cell: RG8
+    SLOPE_CODES      ///< a node's least depth and vtkSlopeMipmapFilter::EncodeSlopes': RGB32F
   };
 
   int Id;               ///< vtkOpenGLReliefMapper::SearchMethods

@@ -1,9 +1,11 @@
 """Runs ReliefBench --quick on the accuracy study (one search method), the stability
-sweeps, the quadric, derivative, shading, automatic and impostor studies, and checks
-what it writes: the results table (every expected row, every figure a finite number, the
-truth error-free, the exact search closer to the truth than the dense mesh and the mesh
-than the bare polygons), a table per sweep, the quadric and derivative studies' rows, the
-automatic study's table and checks, the impostor study's rows, and every chart."""
+sweeps, the quadric, derivative, shading, automatic, impostor, robust and exact-search
+studies, and checks what it writes: the results table (every expected row, every figure
+a finite number, the truth error-free, the exact search closer to the truth than the
+dense mesh and the mesh than the bare polygons), a table per sweep, the quadric and
+derivative studies' rows, the automatic study's table and checks, the impostor study's
+rows, the robust study's rows and its bound, the exact searches' rows, and every
+chart."""
 import argparse
 import math
 import os
@@ -187,6 +189,48 @@ def check_impostors(text):
             fail("the impostor's textures take no bytes: %s" % row)
 
 
+def check_robust(text):
+    """The robust study (quick: 32^2 and 64^2 at 45 degrees): a row per size and setting,
+    every figure finite, samples taken, and SafetyRadius within its bound on every ray."""
+    if "## The robust search" not in text:
+        fail("no robust search section")
+    section = text.split("## The robust search", 1)[1]
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")]
+            for line in section.splitlines() if line.startswith("| ") and "x" in line[:12]]
+    rows = [row for row in rows if row[0] in ("32x32", "64x64")]
+    methods = {row[2] for row in rows}
+    if len(rows) != 18 or methods != {"LinearBinary 10+5", "ExactDDA", "SafetyRadius",
+                                       "RobustBinary"}:
+        fail("the robust study lacks rows: %s" % rows)
+    for row in rows:
+        for cell in row[5:8] + row[9:10]:
+            figure(cell)
+        if not figure(row[5]) > 0.0:
+            fail("a robust study row took no samples: %s" % row)
+        if row[2] == "SafetyRadius" and row[8] != "0":
+            fail("SafetyRadius broke its bound: %s" % row)
+
+
+def check_exact(text):
+    """The exact searches' table (quick: 32^2 and 64^2 at 80 degrees): a row per method,
+    the means finite and positive, and no exact search off the brute-force hit."""
+    if "## Exact searches" not in text:
+        fail("no exact searches section")
+    section = text.split("## Exact searches", 1)[1]
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")]
+            for line in section.splitlines() if line.startswith("| ") and "80" in line]
+    methods = [row[0] for row in rows]
+    if methods != ["LinearBinary 10+5 (not exact)", "ConeStep", "MaximumMipmap",
+                   "SlopeMipmap"]:
+        fail("the exact searches' table lacks rows: %s" % methods)
+    for row in rows:
+        for cell in row[2:5]:
+            if not figure(cell) > 0.0:
+                fail("an exact searches' row took no samples: %s" % row)
+        if row[0] != "LinearBinary 10+5 (not exact)" and row[-1] != "0":
+            fail("an exact search missed the brute-force hit: %s" % row)
+
+
 def check_automatic(text):
     """The automatic study's table for the steps map: a row per setting, each cell
     "wrong % / samples" at each angle, Automatic's rows among them, and its checks."""
@@ -250,7 +294,7 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing,impostors",
+               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing,impostors,robust,exact",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
@@ -284,6 +328,8 @@ def main():
     check_shading(run.stdout)
     check_automatic(text)
     check_impostors(text)
+    check_robust(text)
+    check_exact(text)
     check_sharing(run.stdout)
     print("bench smoke run: results and charts well formed")
 

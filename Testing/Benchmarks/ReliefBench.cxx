@@ -15,6 +15,7 @@
 #include "ReliefPathStudy.h"
 #include "ReliefDerivativeStudy.h"
 #include "ReliefQuadricStudy.h"
+#include "ReliefRobustStudy.h"
 #include "ReliefScene.h"
 #include "ReliefShadingStudy.h"
 #include "ReliefSweeps.h"
@@ -93,7 +94,8 @@ bool KnownSections(const std::string& list)
     if (section != "plain" && section != "methods" && section != "filters" &&
       section != "accuracy" && section != "sweeps" && section != "quadric" &&
       section != "derivative" && section != "sharing" && section != "shading" &&
-      section != "automatic" && section != "paths" && section != "impostors")
+      section != "automatic" && section != "paths" && section != "impostors" &&
+      section != "robust" && section != "exact")
     {
       return false;
     }
@@ -115,14 +117,54 @@ void ViewSquareFilling(vtkRenderer* renderer, double angle)
   renderer->ResetCameraClippingRange();
 }
 
-// Baboud and Decoret's (2006) Table 1 for every search method: the same height field at three
-// resolutions and three view angles; each method's cost relative to LinearBinary's,
-// measured in the same run, interleaved.
-std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
-  vtkOpenGLReliefMapper* relief, const std::vector<int>& sizes, int frames, int rounds)
+// A height map of the methods table: its label and image.
+struct TableMap
 {
-  // LinearBinary first: the others are measured against it; SafetyRadius exact (e = 0)
-  // and at the tolerance that trades a silhouette error of 0.05 depth for speed
+  std::string Label;
+  vtkSmartPointer<vtkImageData> Image;
+};
+
+// The stones map resampled to each size (Baboud and Decoret's (2006) Table 1), then each
+// map of `others` as it is.
+std::vector<TableMap> TableMaps(
+  const std::vector<int>& sizes, const std::vector<std::string>& others)
+{
+  std::vector<TableMap> maps;
+  vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
+  for (int size : sizes)
+  {
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(heights);
+    resize->SetOutputDimensions(size, size, 1);
+    resize->Update();
+    maps.push_back({ std::to_string(size) + "x" + std::to_string(size), resize->GetOutput() });
+  }
+  for (const std::string& name : others)
+  {
+    vtkSmartPointer<vtkImageData> image = ReliefScene::ReadImage(name);
+    if (image->GetNumberOfPoints() == 0)
+    {
+      std::cerr << "relief bench: cannot read the height map " << name << "; left out\n";
+    }
+    else
+    {
+      const int* dimensions = image->GetDimensions();
+      maps.push_back({ name.substr(name.find_last_of('/') + 1) + ", " +
+          std::to_string(dimensions[0]) + "x" + std::to_string(dimensions[1]),
+        image });
+    }
+  }
+  return maps;
+}
+
+// Baboud and Decoret's (2006) Table 1 for every search method: each height map at three
+// view angles; each method's cost relative to LinearBinary's, measured in the same run,
+// interleaved.
+std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkOpenGLReliefMapper* relief, const std::vector<TableMap>& maps, int frames, int rounds)
+{
+  // LinearBinary first: the others are measured against it; SafetyRadius and RobustBinary
+  // at e = 0 and at the tolerance that trades a silhouette error of 0.05 depth for speed
   struct Method
   {
     int Id;
@@ -135,7 +177,8 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
     {
       methods.push_back({ method, 0.0 });
     }
-    if (method == vtkOpenGLReliefMapper::SAFETY_RADIUS)
+    if (method == vtkOpenGLReliefMapper::SAFETY_RADIUS ||
+      method == vtkOpenGLReliefMapper::ROBUST_BINARY)
     {
       methods.push_back({ method, 0.05 });
     }
@@ -149,14 +192,9 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
   relief->SetBinarySteps(5);
   relief->SetSelfShadowing(true);
   relief->SetFootprintShading(false); // the searches' own cost
-  vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
-  for (int size : sizes)
+  for (const TableMap& map : maps)
   {
-    vtkNew<vtkImageResize> resize;
-    resize->SetInputData(heights);
-    resize->SetOutputDimensions(size, size, 1);
-    resize->Update();
-    relief->SetHeightMapData(resize->GetOutput());
+    relief->SetHeightMapData(map.Image);
     for (double angle : { 0.0, 45.0, 80.0 })
     {
       ViewSquareFilling(renderer, angle);
@@ -180,7 +218,7 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
       for (size_t m = 0; m < std::size(methods); ++m)
       {
         const double median = ReliefScene::Median(milliseconds[m]);
-        table << "| " << size << "x" << size << " | " << angle << " | "
+        table << "| " << map.Label << " | " << angle << " | "
               << vtkOpenGLReliefMapper::GetSearchMethodAsString(methods[m].Id);
         if (methods[m].Tolerance > 0.0)
         {
@@ -192,7 +230,7 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
               << (samples[m].Maximum >= 255 ? ">= 255" : std::to_string(samples[m].Maximum))
               << " |\n";
       }
-      std::cout << "methods: " << size << "x" << size << " at " << angle << " degrees done\n";
+      std::cout << "methods: " << map.Label << " at " << angle << " degrees done" << std::endl;
     }
   }
   relief->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
@@ -343,6 +381,7 @@ int main(int argc, char* argv[])
   bool quick = false;
   std::string only; // the sections to run, comma-separated, or all when empty
   std::string method; // the accuracy study's one search method, or all when empty
+  std::vector<std::string> maps; // height maps of the methods table besides Data's
   std::string report;
   std::string results;
   for (int i = 1; i < argc; ++i)
@@ -366,6 +405,10 @@ int main(int argc, char* argv[])
     else if (!std::strcmp(argv[i], "--results") && i + 1 < argc)
     {
       results = argv[++i];
+    }
+    else if (!std::strcmp(argv[i], "--map") && i + 1 < argc)
+    {
+      maps.push_back(argv[++i]);
     }
     else if (!std::strcmp(argv[i], "--quick"))
     {
@@ -392,8 +435,11 @@ int main(int argc, char* argv[])
       std::cout << "usage: ./relief bench [--quick] [--frames N (20)] [--rounds N (3)]\n"
                    "                     [--only SECTION[,SECTION...]]  (plain, methods,\n"
                    "                      filters, accuracy, sweeps, quadric, derivative,\n"
-                   "                      sharing, shading, automatic, paths, impostors)\n"
+                   "                      sharing, shading, automatic, paths, impostors,\n"
+                   "                      robust, exact)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
+                   "                     [--map FILE (a height map for the methods table,\n"
+                   "                      besides Data's; repeatable)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
                    "method at three height-map sizes, every method's speed against its\n"
@@ -402,7 +448,9 @@ int main(int argc, char* argv[])
                    "the derivative frame against the tangent frame, with its seams at creases,\n"
                    "shading against supersampled geometry, the Automatic search against every\n"
                    "fixed setting across the view angle, many actors on one height map,\n"
-                   "path features against geometry, and relief impostors against their mesh.\n"
+                   "path features against geometry, relief impostors against their mesh, and\n"
+                   "the robust search's samples and error bound and the exact searches'\n"
+                   "samples against resolution and angle, on the CPU mirror.\n"
                    "--report writes the timing tables, --results the accuracy study, the\n"
                    "sweeps, the quadric, derivative, shading and automatic studies with their\n"
                    "charts (PNG, in images/ beside FILE.md), each with machine and versions.\n"
@@ -485,9 +533,15 @@ int main(int argc, char* argv[])
     }
   }
 
+  std::vector<std::string> tableMaps = maps;
+  if (!quick)
+  {
+    tableMaps.insert(
+      tableMaps.begin(), { "bricks_height.png", "rivets_height.png", "waves_height.png" });
+  }
   const std::string methodsTable = wanted("methods")
     ? MethodsTable(window, renderer, relief,
-        quick ? std::vector<int>{ 64 } : std::vector<int>{ 128, 512, 2048 },
+        TableMaps(quick ? std::vector<int>{ 64 } : std::vector<int>{ 128, 512, 2048 }, tableMaps),
         std::max(3, frames / 4), rounds)
     : "(not run)\n";
   const std::string filtersTable = wanted("filters") ? FiltersTable(rounds) : "(not run)\n";
@@ -632,6 +686,18 @@ int main(int argc, char* argv[])
   }
   const std::string impostorSection =
     wanted("impostors") ? ReliefImpostorStudy::Study(impostorOptions) : "(not run)\n";
+  ReliefRobustStudy::Options robustOptions;
+  if (quick)
+  {
+    robustOptions.Sizes = { 32, 64 };
+    robustOptions.Angles = { 45.0 };
+    robustOptions.ExactAngles = { 80.0 };
+    robustOptions.Rays = 200;
+  }
+  const std::string robustSection =
+    wanted("robust") ? ReliefRobustStudy::Report(robustOptions) : "(not run)\n";
+  const std::string exactSection =
+    wanted("exact") ? ReliefRobustStudy::ExactReport(robustOptions) : "(not run)\n";
 
   std::ostringstream table;
   table << std::fixed << std::setprecision(2);
@@ -694,11 +760,14 @@ int main(int argc, char* argv[])
           << machine.str();
   const std::string methodsContext =
     "Search methods (Baboud and Decoret 2006, Table 1): the same square and light, the stones\n"
-    "height map resampled to each size (4 tiles across the square), DepthScale 0.02,\n"
-    "self-shadowing on, footprint shading off (the searches' own cost), step counts 10 + 5;\n"
-    "each method's figures relative to LinearBinary's in the same run.\n"
+    "height map resampled to each size (4 tiles across the square), then Data's other maps\n"
+    "and any given with --map as they are, DepthScale 0.02, self-shadowing on, footprint\n"
+    "shading off (the searches' own cost), step counts 10 + 5; each method's figures\n"
+    "relative to LinearBinary's in the same run.\n"
     "Samples are height reads per covered pixel (a cell test or pyramid node counts one);\n"
     "the display caps a pixel's count at 255.\n\n";
+  const std::string methodsSection =
+    methodsTable == "(not run)\n" ? methodsTable : methodsContext + methodsTable;
   const std::string filtersContext = "Acceleration filters, on the stones height map resampled, "
                                      "and the local quadrics of curved relief; "
                                      "vtkSMPTools backend " +
@@ -715,7 +784,7 @@ int main(int argc, char* argv[])
             << "\n" << filtersContext << filtersTable << "\n" << accuracySection << "\n"
             << sweepsSection << "\n" << quadricSection << "\n" << derivativeSection << "\n"
             << shadingSection << "\n" << automaticSection << "\n" << pathSection << "\n"
-            << impostorSection << "\n"
+            << impostorSection << "\n" << robustSection << "\n" << exactSection << "\n"
             << sharingContext
             << sharingTable;
 
@@ -734,8 +803,12 @@ int main(int argc, char* argv[])
   {
     std::ofstream out(results);
     out << "# Results: speed against accuracy\n\n"
-        << "Produced by `./relief bench" << (only.empty() ? "" : " --only " + only)
-        << " --results " << results << "`.\n\n"
+        << "Produced by `./relief bench" << (only.empty() ? "" : " --only " + only);
+    for (const std::string& map : maps)
+    {
+      out << " --map " << map;
+    }
+    out << " --results " << results << "`.\n\n"
         << machine.str();
     // the sections run, each under its heading (the accuracy study's is the page's)
     const std::pair<const char*, const std::string*> sections[] = {
@@ -747,6 +820,9 @@ int main(int argc, char* argv[])
       { "Automatic quality: the search each fragment needs", &automaticSection },
       { "Path features against geometry and height maps", &pathSection },
       { "Relief impostors against the mesh they replace", &impostorSection },
+      { "Search methods (Baboud and Decoret 2006, Table 1)", &methodsSection },
+      { "The robust search as the paper measured it", &robustSection },
+      { "Exact searches against resolution and angle", &exactSection },
     };
     for (const auto& section : sections)
     {

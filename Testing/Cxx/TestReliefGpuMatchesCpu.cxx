@@ -117,6 +117,7 @@ struct Maps
 {
   mirror::DepthField Field;
   mirror::DepthPyramid Pyramid;
+  mirror::SlopePyramid Slopes;
   mirror::ConeStepMap Cones;
   mirror::SafetyRadiusMap Radii;
 };
@@ -128,17 +129,19 @@ void PrepareMaps(const std::string& method, vtkOpenGLReliefMapper* mapper, Maps&
   relief->Update();
   maps.Field = mirror::FieldOf(relief->GetOutput());
   mirror::CurrentField = &maps.Field;
-  if (method == "MaximumMipmap")
+  if (method == "MaximumMipmap" || method == "SlopeMipmap")
   {
     maps.Pyramid = mirror::PyramidOf(maps.Field);
     mirror::CurrentPyramid = &maps.Pyramid;
+    maps.Slopes = mirror::SlopesOf(maps.Field);
+    mirror::CurrentSlopes = &maps.Slopes;
   }
   else if (method == "ConeStep" || method == "Automatic")
   {
     maps.Cones = mirror::ConeMapOf(maps.Field);
     mirror::CurrentConeMap = &maps.Cones;
   }
-  else if (method == "SafetyRadius")
+  else if (method == "SafetyRadius" || method == "RobustBinary")
   {
     maps.Radii = mirror::RadiiOf(maps.Field, mapper->GetSafetyRadiusTolerance());
     mirror::CurrentRadii = &maps.Radii;

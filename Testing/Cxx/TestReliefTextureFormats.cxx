@@ -111,6 +111,8 @@ int TestReliefTextureFormats(int, char*[])
     { vtkOpenGLReliefMapper::SAFETY_RADIUS, 4L * Width * Height },
     { vtkOpenGLReliefMapper::MAXIMUM_MIPMAP, 4L * atlas[0] * atlas[1] },
     { vtkOpenGLReliefMapper::AUTOMATIC, 2L * Width * Height }, // the cone map
+    { vtkOpenGLReliefMapper::ROBUST_BINARY, 4L * Width * Height }, // SafetyRadius's radii
+    { vtkOpenGLReliefMapper::SLOPE_MIPMAP, 12L * atlas[0] * atlas[1] }, // top, two boxes
   };
   for (const auto& method : accelerated)
   {

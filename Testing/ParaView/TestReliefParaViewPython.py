@@ -111,10 +111,11 @@ check(not messages, "a pipeline's image is a height map: %s" % messages)
 check(images.differing_pixels(piped, plain, 8) > 0.05 and
       images.differing_pixels(piped, relief, 8) > 0.05, "and draws its own relief")
 
-# the other frames, an exact search: relief near the tangent frame's, no messages
+# the other frames, two exact searches: relief near the tangent frame's, no messages
 display.ReliefHeightMap = bricks
 for setting, value in (("ReliefFrame", "Quadric"), ("ReliefFrame", "Derivative"),
-                       ("ReliefSearchMethod", "Exact DDA")):
+                       ("ReliefSearchMethod", "Exact DDA"),
+                       ("ReliefSearchMethod", "Slope Mipmap")):
     default = display.GetPropertyValue(setting)
     display.SetPropertyWithName(setting, value)
     Render(view)

@@ -27,7 +27,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
 
 import vtkrelief
 from vtkrelief import (vtkCompositeReliefMapper, vtkConeStepMapFilter, vtkLocalQuadricFilter,
-                       vtkMaximumMipmapFilter,
+                       vtkMaximumMipmapFilter, vtkSlopeMipmapFilter,
                        vtkOpenGLDerivativeReliefMapper, vtkOpenGLQuadricReliefMapper,
                        vtkOpenGLReliefMapper, vtkReliefSurfaceFilter,
                        vtkOpenImageIOReader, vtkReliefDisplacementFilter,
@@ -101,8 +101,11 @@ class TestReliefPython(unittest.TestCase):
     def test_each_method_names_the_filter_of_its_acceleration_image(self):
         expected = {vtkOpenGLReliefMapper.SAFETY_RADIUS: vtkSafetyRadiusFilter,
                     vtkOpenGLReliefMapper.CONE_STEP: vtkConeStepMapFilter,
-                    vtkOpenGLReliefMapper.MAXIMUM_MIPMAP: vtkMaximumMipmapFilter}
-        for method in range(7):
+                    vtkOpenGLReliefMapper.MAXIMUM_MIPMAP: vtkMaximumMipmapFilter,
+                    vtkOpenGLReliefMapper.AUTOMATIC: vtkConeStepMapFilter,
+                    vtkOpenGLReliefMapper.ROBUST_BINARY: vtkSafetyRadiusFilter,
+                    vtkOpenGLReliefMapper.SLOPE_MIPMAP: vtkSlopeMipmapFilter}
+        for method in range(vtkOpenGLReliefMapper.SLOPE_MIPMAP + 1):
             made = vtkOpenGLReliefMapper.NewAccelerationFilter(method)
             if method in expected:
                 self.assertIsInstance(made, expected[method])

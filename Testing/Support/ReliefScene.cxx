@@ -74,7 +74,7 @@ void SetDataDirectory(const std::string& directory)
 
 std::string DataFile(const std::string& name)
 {
-  return DataDirectory() + "/" + name;
+  return !name.empty() && name[0] == '/' ? name : DataDirectory() + "/" + name;
 }
 
 vtkSmartPointer<vtkImageData> ReadImage(const std::string& name)

@@ -72,21 +72,25 @@ struct DepthField
   }
 };
 
-/// A least-depth pyramid as the GPU holds it: level L of max(1, size >> L) nodes per
-/// axis (vtkMaximumMipmapFilter's levels, unpacked from its atlas).
-struct DepthPyramid
+/// A pyramid as the GPU holds it: level L of max(1, size >> L) nodes per axis, unpacked
+/// from the atlas of vtkMaximumMipmapFilter (least depths) or vtkSlopeMipmapFilter (the
+/// texels of RELIEF_SLOPE_NODE: least depth and packed slope bounds).
+template <typename Value>
+struct NodePyramid
 {
   std::vector<int> Widths;
   std::vector<int> Heights;
-  std::vector<std::vector<float>> Levels;
+  std::vector<std::vector<Value>> Levels;
 
   int Top() const { return static_cast<int>(this->Levels.size()) - 1; }
-  float At(vec2 node, int level) const
+  Value At(vec2 node, int level) const
   {
     return this->Levels[level][static_cast<size_t>(node.y) * this->Widths[level] +
       static_cast<size_t>(node.x)];
   }
 };
+using DepthPyramid = NodePyramid<float>;
+using SlopePyramid = NodePyramid<vec4>;
 
 /// A value per cell as the acceleration filters write them, repeating like the texture:
 /// vtkConeStepMapFilter's (top depth, cone ratio), vtkSafetyRadiusFilter's radius.
@@ -139,6 +143,7 @@ struct ImpostorViews
 /// The field and the acceleration maps the shader code reads; set them before a search.
 inline const DepthField* CurrentField = nullptr;
 inline const DepthPyramid* CurrentPyramid = nullptr;
+inline const SlopePyramid* CurrentSlopes = nullptr;
 inline const ConeStepMap* CurrentConeMap = nullptr;
 inline const SafetyRadiusMap* CurrentRadii = nullptr;
 inline const PathTextures* CurrentPaths = nullptr;
@@ -171,6 +176,7 @@ inline vec4 CellDepths(vec2 cell)
 #define RELIEF_CELL_DEPTHS(cell) ReliefCpuMirror::CellDepths(cell)
 #define RELIEF_PYRAMID_DEPTH(node, level) CurrentPyramid->At(node, level)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
+#define RELIEF_SLOPE_NODE(node, level) CurrentSlopes->At(node, level)
 #define RELIEF_CONE_STEP(cell) CurrentConeMap->At(cell)
 #define RELIEF_SAFETY_RADIUS(cell) CurrentRadii->At(cell)
 #define RELIEF_PATH_TEXEL(index) CurrentPaths->Texel(index)
@@ -264,6 +270,8 @@ inline Search FindSearch(const std::string& function)
     RELIEF_MIRROR_SEARCH(reliefSearchMaximumMipmap),
     RELIEF_MIRROR_SEARCH(reliefSearchAutomatic),
     RELIEF_MIRROR_SEARCH(reliefSearchAutomaticCurved),
+    RELIEF_MIRROR_SEARCH(reliefSearchRobustBinary),
+    RELIEF_MIRROR_SEARCH(reliefSearchSlopeMipmap),
   };
 #undef RELIEF_MIRROR_SEARCH
   const auto found = searches.find(function);
@@ -274,6 +282,7 @@ inline Search FindSearch(const std::string& function)
 #undef RELIEF_CELL_DEPTHS
 #undef RELIEF_PYRAMID_DEPTH
 #undef RELIEF_PYRAMID_TOP
+#undef RELIEF_SLOPE_NODE
 #undef RELIEF_CONE_STEP
 #undef RELIEF_SAFETY_RADIUS
 #undef RELIEF_PATH_TEXEL

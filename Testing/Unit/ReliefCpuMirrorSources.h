@@ -6,6 +6,7 @@
 #include "vtkReliefSearch.glsl"
 #include "vtkReliefGridSearch.glsl"
 #include "vtkReliefSafetySearch.glsl"
+#include "vtkReliefSlopeSearch.glsl"
 #include "vtkReliefConeSearch.glsl"
 #include "vtkReliefAutomaticSearch.glsl"
 #include "vtkReliefPathSearch.glsl"

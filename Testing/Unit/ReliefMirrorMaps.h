@@ -8,6 +8,7 @@
 #include "vtkConeStepMapFilter.h"
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkSafetyRadiusFilter.h"
+#include "vtkSlopeMipmapFilter.h"
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -56,15 +57,18 @@ inline vtkSmartPointer<vtkImageData> Accelerate(vtkReliefAccelerationFilter* fil
   return filter->GetOutput();
 }
 
-/// vtkMaximumMipmapFilter's pyramid of the field, level by level.
-inline DepthPyramid PyramidOf(const DepthField& field)
+/// A pyramid filter's atlas, level by level; `Texel` makes a node's value from its
+/// components.
+template <typename Value, typename Texel>
+NodePyramid<Value> PyramidFromAtlas(
+  vtkReliefAccelerationFilter* filter, const DepthField& field, Texel texel)
 {
-  vtkNew<vtkMaximumMipmapFilter> filter;
   vtkImageData* atlas = Accelerate(filter, field);
   const int atlasWidth = atlas->GetDimensions()[0];
+  const int components = filter->GetOutputComponents();
   const float* values =
     vtkFloatArray::SafeDownCast(atlas->GetPointData()->GetScalars())->GetPointer(0);
-  DepthPyramid pyramid;
+  NodePyramid<Value> pyramid;
   int origin[2];
   int size[2];
   for (int level = 0;
@@ -73,15 +77,35 @@ inline DepthPyramid PyramidOf(const DepthField& field)
   {
     pyramid.Widths.push_back(size[0]);
     pyramid.Heights.push_back(size[1]);
-    std::vector<float> nodes;
+    std::vector<Value> nodes;
     for (int j = 0; j < size[1]; ++j)
     {
-      const float* row = values + static_cast<size_t>(origin[1] + j) * atlasWidth + origin[0];
-      nodes.insert(nodes.end(), row, row + size[0]);
+      for (int i = 0; i < size[0]; ++i)
+      {
+        nodes.push_back(texel(values +
+          (static_cast<size_t>(origin[1] + j) * atlasWidth + origin[0] + i) * components));
+      }
     }
     pyramid.Levels.push_back(nodes);
   }
   return pyramid;
+}
+
+/// vtkMaximumMipmapFilter's pyramid of the field.
+inline DepthPyramid PyramidOf(const DepthField& field)
+{
+  vtkNew<vtkMaximumMipmapFilter> filter;
+  return PyramidFromAtlas<float>(filter, field, [](const float* texel) { return *texel; });
+}
+
+/// vtkSlopeMipmapFilter's pyramid of the field, its slope bounds packed as uploaded.
+inline SlopePyramid SlopesOf(const DepthField& field)
+{
+  vtkNew<vtkSlopeMipmapFilter> filter;
+  return PyramidFromAtlas<vec4>(filter, field, [](const float* texel) {
+    return vec4(texel[0], vtkSlopeMipmapFilter::EncodeSlopes(texel[1], texel[2]),
+      vtkSlopeMipmapFilter::EncodeSlopes(texel[3], texel[4]), 0.0f);
+  });
 }
 
 /// A per-cell map from an acceleration filter's output of the field's size.

@@ -1,15 +1,20 @@
-// vtkRelief: SafetyRadius, the robust binary search of Baboud and Decoret 2006, s3.4 (Baboud and
-// Decoret 2006). Cell c stores a radius n (vtkSafetyRadiusFilter): a ray on or above the field at a
-// point over c, once more than e below the field, is nowhere above it again before it leaves the
-// square of cells within n of c. So the search jumps from square exit to square exit while the ray
-// stays above. An exit found below brackets a crossing (the only one when e = 0): bisection,
-// reading the exact patch, narrows the bracket to a few cells and an exact cell walk finishes it.
-// Radius 0 promises nothing (Baboud and Decoret 2006, Fig. 7): that cell alone is intersected
-// exactly, and the search goes on from its exit. With e = 0 the hit is exact; with e > 0 the search
-// steps over the ray only where it is at most e below the field, so it returns a true hit, at or
-// after the first one and no later than where the ray is first more than e below the field. Shared
-// with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs RELIEF_SAFETY_RADIUS(cell):
-// the radius of a cell (unwrapped index; the includer repeats it), in cells.
+// vtkRelief: SafetyRadius and RobustBinary, the robust binary search of Baboud and Decoret 2006,
+// s3.4. Cell c stores a radius n (vtkSafetyRadiusFilter): a ray on or above the field at a point
+// over c, once more than e below the field, is nowhere above it again before it leaves the square
+// of cells within n of c. So the search jumps from square exit to square exit while the ray stays
+// above. An exit found below brackets a crossing (the only one when e = 0): bisection, reading the
+// exact patch, narrows the bracket to a few cells and an exact cell walk finishes it.
+// Radius 0 promises nothing (Baboud and Decoret 2006, Fig. 7). The two searches differ there:
+// - SafetyRadius intersects that cell exactly and goes on from its exit. With e = 0 the hit is
+//   exact; with e > 0 the search steps over the ray only where it is at most e below the field,
+//   so it returns a true hit, at or after the first one and no later than where the ray is first
+//   more than e below the field.
+// - RobustBinary follows the paper as written: the radius is clamped to the cell itself, tested
+//   at its exit only, so a ray that dips into a radius-0 cell and out again within it is missed
+//   too (errors at silhouettes, which e bounds only where radii are not 0).
+// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
+// RELIEF_SAFETY_RADIUS(cell): the radius of a cell (unwrapped index; the includer repeats it), in
+// cells.
 
 #ifndef RELIEF_SAFETY_RADIUS
 // The GPU's radii, one texel per cell: read at the texel's centre with nearest filtering,
@@ -34,7 +39,8 @@ vec2 reliefCellAfter(ReliefGridRay grid, float t, vec2 signs, vec2 inverseRun)
   return cell;
 }
 
-ReliefHit reliefSearchSafetyRadius(ReliefRay ray, int linearSteps, int refinementSteps)
+// The jumps of both searches; `clampsZeroRadius` selects RobustBinary's clamp (see above).
+ReliefHit reliefSafetyRadiusJumps(ReliefRay ray, bool clampsZeroRadius)
 {
   ReliefGridRay grid = reliefGridRay(ray, RELIEF_DEPTH_SIZE);
   vec2 signs = reliefStepSigns(grid);
@@ -55,7 +61,7 @@ ReliefHit reliefSearchSafetyRadius(ReliefRay ray, int linearSteps, int refinemen
     vec2 exits = reliefCrossings(grid, square, signs, inverseRun);
     float tExit = min(min(exits.x, exits.y), 1.0f);
     samples += 1;
-    if (radius < 0.5f)
+    if (radius < 0.5f && !clampsZeroRadius)
     {
       tHit = reliefCellIntersection(grid, cell, RELIEF_CELL_DEPTHS(cell), t, tExit);
       if (tHit >= 0.0f)
@@ -78,4 +84,16 @@ ReliefHit reliefSearchSafetyRadius(ReliefRay ray, int linearSteps, int refinemen
   }
   return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
                       : reliefGridEnd(ray, grid, samples);
+}
+
+ReliefHit reliefSearchSafetyRadius(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefSafetyRadiusJumps(ray, false);
+}
+
+// The bracket is refined by the exact bisection and walk, where the paper bisects a fixed
+// number of times (its step count is not given): the hit then lies on the field.
+ReliefHit reliefSearchRobustBinary(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefSafetyRadiusJumps(ray, true);
 }

@@ -1,0 +1,125 @@
+#include "vtkSlopeMipmapFilter.h"
+
+#include "vtkFloatArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkReliefDepthImage.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkSlopeMipmapFilter);
+
+namespace
+{
+constexpr int Components = 5;
+constexpr int ZeroCode = 2048;      // the code of 0; codes above are positive
+constexpr double CodesPerOctave = 128.0;
+constexpr double LeastOctave = -15.0; // magnitude code m stands for 2^(m / 128 - 15)
+
+// The code of `value` rounded toward +infinity (`up`) or -infinity, by one more code than
+// needed. 0 is exact.
+int SlopeCode(double value, bool up)
+{
+  if (value == 0.0)
+  {
+    return ZeroCode;
+  }
+  const double exact = (std::log2(std::abs(value)) - LeastOctave) * CodesPerOctave;
+  // rounding up makes a positive value larger and a negative one smaller in magnitude
+  const bool larger = (value > 0.0) == up;
+  const int steps = larger ? static_cast<int>(std::ceil(exact)) + 1
+                           : static_cast<int>(std::floor(exact)) - 1;
+  // magnitudes below the least code become 0 or the least code; |slopes| <= 1 < 2^0.99
+  const int magnitude = std::min(std::max(steps, larger ? 1 : 0), ZeroCode - 1);
+  return value > 0.0 ? ZeroCode + magnitude : ZeroCode - magnitude;
+}
+}
+
+vtkSlopeMipmapFilter::vtkSlopeMipmapFilter() = default;
+
+double vtkSlopeMipmapFilter::DecodeSlope(int code)
+{
+  const int m = code - ZeroCode;
+  return m == 0 ? 0.0
+                : (m > 0 ? 1.0 : -1.0) * std::exp2(std::abs(m) / CodesPerOctave + LeastOctave);
+}
+
+float vtkSlopeMipmapFilter::EncodeSlopes(double low, double high)
+{
+  return static_cast<float>(SlopeCode(low, false) * 4096 + SlopeCode(high, true));
+}
+
+void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArray* output)
+{
+  const int width = field.Width;
+  const int height = field.Height;
+  int atlas[2];
+  GetAtlasSize(width, height, atlas);
+  // texels outside every level: the deepest and flat, they never stop a ray
+  for (int k = 0; k < Components; ++k)
+  {
+    output->FillComponent(k, k == 0 ? 1.0 : 0.0);
+  }
+  float* values = output->GetPointer(0);
+  auto at = [&](int x, int y) {
+    return values + (static_cast<size_t>(y) * atlas[0] + x) * Components;
+  };
+
+  // level 0: the patch's highest corner and the box of its gradient, extreme at corners
+  this->ForRows(height, 8, 0.0, 0.8, [&](int begin, int end) {
+    for (int j = begin; j < end; ++j)
+    {
+      for (int i = 0; i < width; ++i)
+      {
+        const float d00 = field.At(i, j);
+        const float d10 = field.At(i + 1, j);
+        const float d01 = field.At(i, j + 1);
+        const float d11 = field.At(i + 1, j + 1);
+        float* node = at(i, j);
+        node[0] = std::min(std::min(d00, d10), std::min(d01, d11));
+        node[1] = std::min(d10 - d00, d11 - d01);
+        node[2] = std::max(d10 - d00, d11 - d01);
+        node[3] = std::min(d01 - d00, d11 - d10);
+        node[4] = std::max(d01 - d00, d11 - d10);
+      }
+    }
+  });
+
+  const int top = GetTopLevel(width, height);
+  for (int level = 1; level <= top; ++level)
+  {
+    int origin[2], size[2], childOrigin[2], childSize[2];
+    GetLevelPlacement(width, height, level, origin, size);
+    GetLevelPlacement(width, height, level - 1, childOrigin, childSize);
+    for (int j = 0; j < size[1]; ++j)
+    {
+      int firstRow, lastRow;
+      GetChildRange(j, height, level, firstRow, lastRow);
+      for (int i = 0; i < size[0]; ++i)
+      {
+        int firstColumn, lastColumn;
+        GetChildRange(i, width, level, firstColumn, lastColumn);
+        float* node = at(origin[0] + i, origin[1] + j);
+        const float* first = at(childOrigin[0] + firstColumn, childOrigin[1] + firstRow);
+        std::copy(first, first + Components, node);
+        for (int y = firstRow; y <= lastRow; ++y)
+        {
+          for (int x = firstColumn; x <= lastColumn; ++x)
+          {
+            const float* child = at(childOrigin[0] + x, childOrigin[1] + y);
+            node[0] = std::min(node[0], child[0]);
+            node[1] = std::min(node[1], child[1]);
+            node[2] = std::max(node[2], child[2]);
+            node[3] = std::min(node[3], child[3]);
+            node[4] = std::max(node[4], child[4]);
+          }
+        }
+      }
+    }
+  }
+}
+
+void vtkSlopeMipmapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

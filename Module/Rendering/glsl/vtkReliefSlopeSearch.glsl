@@ -1,0 +1,242 @@
+// vtkRelief: SlopeMipmap, an exact search over a maximum mipmap whose nodes also bound the
+// slopes of the field under them (vtkSlopeMipmapFilter). MaximumMipmap (Tevs et al. 2008) can
+// only skip a node the ray passes over entirely; with the box of the field's gradients the gap
+// g(t) = field depth - ray depth changes at a rate within [least, most] across the node, so
+// one read of a node the ray is standing above (g >= gLow >= 0 at t) proves more:
+//  (a) the ray leaves the node above its top: over it (MaximumMipmap's test);
+//  (b) least >= 0: the gap cannot fall in the node: over it;
+//  (c) gLow + least * (tOut - t) > 0: the gap cannot fall to 0 before the exit (a Lipschitz
+//      bound, after segment tracing, Galin et al. 2020): over it, with that bound carried on;
+//  (d) most < 0: the gap only falls, so the ray meets the field at most once in the node:
+//      one read of the cell at the exit says whether, and a crossing is bracketed there;
+// otherwise down a level, where the ray reaches the node's top. Single cells are solved as
+// ExactDDA does. A bracket [above, below] holding one crossing is closed by reading cells where
+// Newton's and the secant's estimates put it, within what the rates allow, each read solving
+// the whole cell: with one crossing, the first zero of a cell entered above the field is it.
+// Exact: every skip is proven, every hit solved from a point known above the field.
+// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs, besides
+// vtkReliefGridSearch.glsl's pyramid, RELIEF_SLOPE_NODE(node, level): vec4 (least depth,
+// packed dD/dx bounds, packed dD/dy bounds, unused) of a node, unpacked by reliefSlopeDecode.
+
+#ifndef RELIEF_SLOPE_NODE
+#define RELIEF_SLOPE_NODE(node, level) texelFetch(reliefAccelerationTexture, \
+  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0)
+#endif
+
+// One code of vtkSlopeMipmapFilter::EncodeSlopes: 2048 is 0, each code away from it one
+// 128th of an octave from 2^-15.
+float reliefSlopeValue(float code)
+{
+  float steps = code - 2048.0f;
+  return steps == 0.0f ? 0.0f : sign(steps) * exp2(abs(steps) / 128.0f - 15.0f);
+}
+
+// Two slope bounds packed as low * 4096 + high (exact integers in a float).
+vec2 reliefSlopeDecode(float codes)
+{
+  float low = floor(codes / 4096.0f);
+  return vec2(reliefSlopeValue(low), reliefSlopeValue(codes - low * 4096.0f));
+}
+
+// The least and most rate of the gap along the ray (per unit of t) over a node whose
+// gradients lie in the box of `node`.
+vec2 reliefSlopeRates(vec4 node, ReliefGridRay grid)
+{
+  vec2 x = reliefSlopeDecode(node.y) * grid.direction.x;
+  vec2 y = reliefSlopeDecode(node.z) * grid.direction.y;
+  return vec2(min(x.x, x.y) + min(y.x, y.y) - grid.descent,
+    max(x.x, x.y) + max(y.x, y.y) - grid.descent);
+}
+
+// The gap and its rate (per unit of t) at t, on the patch of `cell`.
+vec2 reliefPatchGap(ReliefGridRay grid, vec2 cell, vec4 depths, float t)
+{
+  vec2 at = reliefGridAt(grid, t);
+  float x = at.x - cell.x;
+  float y = at.y - cell.y;
+  float b = depths.y - depths.x;
+  float c = depths.z - depths.x;
+  float e = depths.w - depths.y - depths.z + depths.x;
+  float gap = depths.x + b * x + c * y + e * x * y - (grid.depth + t * grid.descent);
+  float rate = (b + e * y) * grid.direction.x + (c + e * x) * grid.direction.y - grid.descent;
+  return vec2(gap, rate);
+}
+
+// The single crossing in [above, below]: gap and rate at `below` known (gapBelow), the
+// gap falling at a rate within `rates` when rates.y < 0. Each probe reads the cell where
+// the secant (both ends known) or Newton (from below) puts the crossing, bounded by the
+// rates, and solves it over its part of the bracket: the crossing, or a new end with its
+// gap known exactly; a probe that did not halve the bracket is followed by a bisection.
+ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, float below,
+  vec2 gapBelow, vec2 rates, int samples)
+{
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
+  float gapAbove = -1.0f;
+  float lastWidth = 2.0f * (below - above);
+  bool bounded = rates.y < 0.0f;
+  for (int i = 0; i < 64 && above < below; ++i)
+  {
+    float low = above;
+    float high = below;
+    if (bounded)
+    {
+      low = max(low, below - gapBelow.x / rates.y);
+      high = min(high, below - gapBelow.x / rates.x);
+      if (gapAbove > 0.0f)
+      {
+        low = max(low, above - gapAbove / rates.x);
+        high = min(high, above - gapAbove / rates.y);
+      }
+    }
+    float width = below - above;
+    float estimate = gapAbove > 0.0f
+      ? above + width * gapAbove / (gapAbove - gapBelow.x)
+      : (gapBelow.y < 0.0f ? below - gapBelow.x / gapBelow.y : 0.5f * (low + high));
+    float probe = clamp(width > 0.5f * lastWidth ? 0.5f * (low + high) : estimate, low, high);
+    lastWidth = width;
+    vec2 cell = floor(reliefGridAt(grid, probe));
+    vec2 behind = vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y);
+    vec2 entries = reliefCrossings(grid, behind, signs, inverseRun);
+    vec2 exits = reliefCrossings(grid, cell + ahead, signs, inverseRun);
+    float tIn = min(max(max(entries.x, entries.y), above), probe);
+    float tOut = max(min(min(exits.x, exits.y), below), probe);
+    vec4 depths = RELIEF_CELL_DEPTHS(cell);
+    samples += 1;
+    float t = reliefCellIntersection(grid, cell, depths, tIn, tOut);
+    if (t > tIn || (t >= 0.0f && tIn <= above))
+    {
+      return reliefGridHit(ray, grid, t, true, samples);
+    }
+    if (t >= 0.0f)
+    {
+      below = tIn;
+      gapBelow = reliefPatchGap(grid, cell, depths, tIn);
+      gapBelow.x = min(gapBelow.x, 0.0f);
+    }
+    else
+    {
+      above = tOut;
+      gapAbove = max(reliefPatchGap(grid, cell, depths, tOut).x, 1e-30f);
+    }
+  }
+  // float rounding closed the bracket: an exact walk of what is left
+  ReliefHit walk = reliefWalkCells(ray, grid, min(above, below), below, samples);
+  return walk.hit ? walk : reliefGridHit(ray, grid, below, true, walk.samples);
+}
+
+// The crossing bracketed in [above, below], where `cell` (its corners read) holds the ray
+// on or below the field at `below`: that cell first, back to where the ray entered it (no
+// further read when it holds the crossing), then reliefSlopeRefine.
+ReliefHit reliefSlopeBracket(ReliefRay ray, ReliefGridRay grid, float above, float below,
+  vec2 cell, vec4 depths, vec2 rates, int samples)
+{
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
+  vec2 behind = vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y);
+  vec2 entries = reliefCrossings(grid, behind, signs, inverseRun);
+  float tIn = min(max(max(entries.x, entries.y), above), below);
+  float back = reliefCellIntersection(grid, cell, depths, tIn, below);
+  if (back >= 0.0f && (back > tIn || tIn <= above))
+  {
+    return reliefGridHit(ray, grid, back, true, samples);
+  }
+  if (tIn <= above)
+  {
+    ReliefHit walk = reliefWalkCells(ray, grid, above, below, samples);
+    return walk.hit ? walk : reliefGridHit(ray, grid, below, true, walk.samples);
+  }
+  vec2 gap = reliefPatchGap(grid, cell, depths, tIn);
+  gap.x = min(gap.x, 0.0f);
+  return reliefSlopeRefine(ray, grid, above, tIn, gap, rates, samples);
+}
+
+ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  vec2 size = RELIEF_DEPTH_SIZE;
+  ReliefGridRay grid = reliefGridRay(ray, size);
+  vec2 signs = reliefStepSigns(grid);
+  vec2 inverseRun = reliefInverseRun(grid);
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
+  // start two levels below the one whose nodes span the ray's whole run: the slopes
+  // prove more in smaller nodes, and climbing is cheap
+  float run = max(abs(grid.direction.x), abs(grid.direction.y));
+  int level = clamp(int(ceil(log2(max(run, 1.0f)))) - 2, 0, RELIEF_PYRAMID_TOP);
+  float t = 0.0f;
+  float gapLow = 0.0f; // a lower bound of the gap at t
+  int samples = 0;
+  for (int i = 0; i < RELIEF_MAX_ITERATIONS && t < 1.0f; ++i)
+  {
+    vec2 cell = reliefCellAfter(grid, t, signs, inverseRun);
+    vec2 tile = floor(vec2(cell.x / size.x, cell.y / size.y));
+    vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
+    float span = float(1 << level); // exact, unlike exp2 on some GPUs
+    vec2 levelSize = reliefPyramidSize(level);
+    vec2 node = min(floor((cell - origin) / span), vec2(levelSize.x - 1.0f, levelSize.y - 1.0f));
+    vec2 low = origin + node * span;
+    vec2 high = vec2(node.x >= levelSize.x - 1.0f ? origin.x + size.x : low.x + span,
+      node.y >= levelSize.y - 1.0f ? origin.y + size.y : low.y + span);
+    vec2 exits = reliefCrossings(grid,
+      vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
+    float tOut = min(max(min(exits.x, exits.y), t), 1.0f);
+    samples += 1;
+    bool over = false;
+    float nextLow = 0.0f;
+    if (level == 0)
+    {
+      // the cell itself: its corners hold all a node would
+      vec4 depths = RELIEF_CELL_DEPTHS(cell);
+      float tHit = reliefCellIntersection(grid, cell, depths, t, tOut);
+      if (tHit >= 0.0f)
+      {
+        return reliefGridHit(ray, grid, tHit, true, samples);
+      }
+      over = true;
+      nextLow = max(reliefPatchGap(grid, cell, depths, tOut).x, 0.0f);
+    }
+    else
+    {
+      vec4 texel = RELIEF_SLOPE_NODE(node, level);
+      vec2 rates = reliefSlopeRates(texel, grid);
+      float zOut = grid.depth + tOut * grid.descent;
+      float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
+      over = zOut < texel.x || rates.x >= 0.0f || bound > 0.0f;
+      nextLow = max(max(texel.x - zOut, bound), 0.0f);
+      if (!over && rates.y < 0.0f)
+      {
+        // (d): the exit's cell says whether the one crossing is in the node
+        samples += 1;
+        vec2 exitCell = floor(reliefGridAt(grid, max(t, tOut - 1e-4f / max(run, 1.0f))));
+        vec4 exitDepths = RELIEF_CELL_DEPTHS(exitCell);
+        float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
+        if (gapOut <= 0.0f)
+        {
+          return reliefSlopeBracket(ray, grid, t, tOut, exitCell, exitDepths, rates, samples);
+        }
+        over = true;
+        nextLow = gapOut;
+      }
+      if (!over)
+      {
+        // down, where the ray reaches the node's top, the gap bound carried there
+        float tDown = max(t, min((texel.x - grid.depth) / grid.descent, tOut));
+        gapLow = max(gapLow + rates.x * (tDown - t), 0.0f);
+        t = tDown;
+        level -= 1;
+        continue;
+      }
+    }
+    // past the node, and up a level when the next node has another parent
+    vec2 next = reliefCellAfter(grid, tOut, signs, inverseRun);
+    float parentSpan = 2.0f * span;
+    bool climbs = floor(next.x / size.x) != tile.x || floor(next.y / size.y) != tile.y ||
+      floor((next.x - origin.x) / parentSpan) != floor((cell.x - origin.x) / parentSpan) ||
+      floor((next.y - origin.y) / parentSpan) != floor((cell.y - origin.y) / parentSpan);
+    level = climbs ? min(level + 1, RELIEF_PYRAMID_TOP) : level;
+    t = tOut;
+    gapLow = nextLow;
+  }
+  return reliefGridEnd(ray, grid, samples);
+}

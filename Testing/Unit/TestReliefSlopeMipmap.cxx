@@ -1,0 +1,143 @@
+// The SlopeMipmap search of vtkReliefSlopeSearch.glsl and the pyramid of
+// vtkSlopeMipmapFilter it trusts: exact against the brute-force reference, boxes that hold
+// every gradient under their node, codes rounded outward.
+#include "ReliefSearchReference.h"
+
+#include <map>
+#include <random>
+
+namespace
+{
+using namespace ReliefCpuMirror;
+
+class ReliefSlopeMipmap : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    AllScenes = new std::vector<Scene>(Scenes());
+    AllSlopes = new std::map<std::string, SlopePyramid>();
+    for (const Scene& scene : *AllScenes)
+    {
+      (*AllSlopes)[scene.Name] = SlopesOf(scene.Field);
+    }
+  }
+  static void TearDownTestSuite()
+  {
+    delete AllScenes;
+    delete AllSlopes;
+    AllScenes = nullptr;
+    AllSlopes = nullptr;
+  }
+  static void Use(const Scene& scene) { CurrentSlopes = &AllSlopes->at(scene.Name); }
+  static std::vector<Scene>* AllScenes;
+  static std::map<std::string, SlopePyramid>* AllSlopes;
+};
+std::vector<Scene>* ReliefSlopeMipmap::AllScenes = nullptr;
+std::map<std::string, SlopePyramid>* ReliefSlopeMipmap::AllSlopes = nullptr;
+
+ReliefHit SlopeMipmap(const ReliefRay& ray)
+{
+  return reliefSearchSlopeMipmap(ray, 0, 0);
+}
+}
+
+TEST_F(ReliefSlopeMipmap, MatchesTheReferenceEverywhere)
+{
+  ExpectExact(*AllScenes, "SlopeMipmap", &SlopeMipmap, Tolerance, &Use);
+}
+
+TEST_F(ReliefSlopeMipmap, KeepsItsHitsOnGrazingRaysThousandsOfCellsLong)
+{
+  ExpectGrazingHits(*AllScenes, "SlopeMipmap", &SlopeMipmap, &Use);
+}
+
+TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
+{
+  // the terrain at 80 degrees, as the bench's methods table sees it (depth 0.08 tile)
+  const Scene& terrain = (*AllScenes)[5];
+  CurrentField = &terrain.Field;
+  CurrentPyramid = &terrain.Pyramid;
+  Use(terrain);
+  long mipmap = 0;
+  long slopes = 0;
+  std::mt19937 generator(31);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float run = std::tan(80.0f * float(Pi) / 180.0f) * 0.08f;
+  for (int k = 0; k < 2000; ++k)
+  {
+    const float azimuth = 2.0f * float(Pi) * unit(generator);
+    const ReliefRay ray = reliefViewRay(vec2(unit(generator), unit(generator)),
+      vec3(run * std::cos(azimuth), run * std::sin(azimuth), 1.0f));
+    mipmap += reliefSearchMaximumMipmap(ray, 0, 0).samples;
+    slopes += reliefSearchSlopeMipmap(ray, 0, 0).samples;
+  }
+  std::cout << "terrain at 80 degrees: MaximumMipmap " << mipmap / 2000.0
+            << " samples per ray, SlopeMipmap " << slopes / 2000.0 << "\n";
+  EXPECT_LT(slopes, 0.8 * mipmap);
+}
+
+TEST(ReliefSlopeMipmapFilter, BoxesHoldEveryGradientUnderTheirNode)
+{
+  const DepthField field = RandomField(37, 21, 5, 0.0f, 1.0f);
+  const DepthPyramid tops = PyramidOf(field);
+  const SlopePyramid slopes = SlopesOf(field);
+  ASSERT_EQ(slopes.Top(), tops.Top());
+  std::mt19937 generator(9);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int level = 0; level <= slopes.Top(); ++level)
+  {
+    for (int j = 0; j < slopes.Heights[level]; ++j)
+    {
+      for (int i = 0; i < slopes.Widths[level]; ++i)
+      {
+        const vec4 node = slopes.At(vec2(i, j), level);
+        ASSERT_EQ(node.x, tops.At(vec2(i, j), level)) << "level " << level;
+        const vec2 dx = reliefSlopeDecode(node.y);
+        const vec2 dy = reliefSlopeDecode(node.z);
+        // cells of the node: [i 2^L, (i + 1) 2^L), the last node of a row to the edge
+        const int span = 1 << level;
+        const int lastX = i == slopes.Widths[level] - 1 ? field.Width : (i + 1) * span;
+        const int lastY = j == slopes.Heights[level] - 1 ? field.Height : (j + 1) * span;
+        for (int k = 0; k < 8; ++k)
+        {
+          const int cx = i * span + static_cast<int>(unit(generator) * (lastX - i * span));
+          const int cy = j * span + static_cast<int>(unit(generator) * (lastY - j * span));
+          const float x = unit(generator);
+          const float y = unit(generator);
+          const float gx = (field.At(cx + 1, cy) - field.At(cx, cy)) * (1.0f - y) +
+            (field.At(cx + 1, cy + 1) - field.At(cx, cy + 1)) * y;
+          const float gy = (field.At(cx, cy + 1) - field.At(cx, cy)) * (1.0f - x) +
+            (field.At(cx + 1, cy + 1) - field.At(cx + 1, cy)) * x;
+          ASSERT_LE(dx.x, gx) << "level " << level << ", node " << i << ", " << j;
+          ASSERT_GE(dx.y, gx) << "level " << level << ", node " << i << ", " << j;
+          ASSERT_LE(dy.x, gy) << "level " << level << ", node " << i << ", " << j;
+          ASSERT_GE(dy.y, gy) << "level " << level << ", node " << i << ", " << j;
+          ASSERT_LE(node.x, field.At(cx, cy));
+        }
+      }
+    }
+  }
+}
+
+TEST(ReliefSlopeMipmapFilter, CodesRoundOutwardAndStayClose)
+{
+  std::mt19937 generator(3);
+  std::uniform_real_distribution<double> exponent(-20.0, 0.0);
+  for (int k = 0; k < 20000; ++k)
+  {
+    const double a = (k % 2 ? -1.0 : 1.0) * std::exp2(exponent(generator));
+    const double b = (k % 3 ? 1.0 : -1.0) * std::exp2(exponent(generator));
+    const double low = std::min(a, b);
+    const double high = std::max(a, b);
+    const vec2 decoded = reliefSlopeDecode(vtkSlopeMipmapFilter::EncodeSlopes(low, high));
+    ASSERT_LE(decoded.x, low);
+    ASSERT_GE(decoded.y, high);
+    // within three codes (2 + rounding) of 128 an octave, or of the least code, 2^-15
+    EXPECT_LE(low - decoded.x, std::max(0.017 * std::abs(low), std::exp2(-14.0)));
+    EXPECT_LE(decoded.y - high, std::max(0.017 * std::abs(high), std::exp2(-14.0)));
+  }
+  const vec2 zero = reliefSlopeDecode(vtkSlopeMipmapFilter::EncodeSlopes(0.0, 0.0));
+  EXPECT_EQ(zero.x, 0.0f);
+  EXPECT_EQ(zero.y, 0.0f);
+}
