@@ -90,6 +90,18 @@ void vtkMaximumMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatA
     }
   });
 
+  ReduceLevels(width, height, 1, values,
+    [](float* node, const float* child) { *node = std::min(*node, *child); });
+}
+
+void vtkMaximumMipmapFilter::ReduceLevels(int width, int height, int components, float* values,
+  const std::function<void(float* node, const float* child)>& combine)
+{
+  int atlas[2];
+  GetAtlasSize(width, height, atlas);
+  auto at = [&](const int origin[2], int x, int y) {
+    return values + (static_cast<size_t>(origin[1] + y) * atlas[0] + origin[0] + x) * components;
+  };
   const int top = GetTopLevel(width, height);
   for (int level = 1; level <= top; ++level)
   {
@@ -104,15 +116,16 @@ void vtkMaximumMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatA
       {
         int firstColumn, lastColumn;
         GetChildRange(i, width, level, firstColumn, lastColumn);
-        float least = 1.0f;
+        float* node = at(origin, i, j);
+        const float* first = at(childOrigin, firstColumn, firstRow);
+        std::copy(first, first + components, node);
         for (int y = firstRow; y <= lastRow; ++y)
         {
           for (int x = firstColumn; x <= lastColumn; ++x)
           {
-            least = std::min(least, at(childOrigin[0] + x, childOrigin[1] + y));
+            combine(node, at(childOrigin, x, y));
           }
         }
-        at(origin[0] + i, origin[1] + j) = least;
       }
     }
   }

@@ -28,6 +28,8 @@
 #include "vtkReliefAccelerationFilter.h"
 #include "vtkReliefFiltersModule.h" // For export macro
 
+#include <functional> // For ReduceLevels
+
 class VTKRELIEFFILTERS_EXPORT vtkMaximumMipmapFilter : public vtkReliefAccelerationFilter
 {
 public:
@@ -66,6 +68,14 @@ protected:
   const char* GetProductName() override { return "a maximum mipmap"; }
   const char* GetOutputName() override { return "MinimumDepth"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;
+
+  /**
+   * Fills levels 1 and up of the atlas `values` of a width x height map, `components`
+   * floats a texel, from level 0: each node starts as its first child, and
+   * combine(node, child) takes in each child.
+   */
+  static void ReduceLevels(int width, int height, int components, float* values,
+    const std::function<void(float* node, const float* child)>& combine);
 
 private:
   vtkMaximumMipmapFilter(const vtkMaximumMipmapFilter&) = delete;

@@ -2,8 +2,9 @@
  * @class   vtkReliefAccelerationFilter
  * @brief   base of the filters that precompute what a relief search reads
  *
- * vtkMaximumMipmapFilter, vtkSafetyRadiusFilter and vtkConeStepMapFilter turn a relief
- * height field into an image the mapper uploads as a texture. They share what this class
+ * vtkMaximumMipmapFilter, vtkSlopeMipmapFilter, vtkSafetyRadiusFilter and
+ * vtkConeStepMapFilter turn a relief height field into an image the mapper uploads as a
+ * texture. They share what this class
  * does: read the depths from vtkReliefTextureFilter's output (four components, depth in
  * the last) or from a one-component depth image, ask for the whole input whatever part
  * of the output is requested (every value may depend on the whole map), report an

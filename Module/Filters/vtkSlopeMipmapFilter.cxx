@@ -24,12 +24,17 @@ int SlopeCode(double value, bool up)
   {
     return ZeroCode;
   }
+  if (!std::isfinite(value))
+  {
+    return up ? 2 * ZeroCode - 1 : 1; // the widest bound: NaN proves nothing
+  }
   const double exact = (std::log2(std::abs(value)) - LeastOctave) * CodesPerOctave;
   // rounding up makes a positive value larger and a negative one smaller in magnitude
   const bool larger = (value > 0.0) == up;
   const int steps = larger ? static_cast<int>(std::ceil(exact)) + 1
                            : static_cast<int>(std::floor(exact)) - 1;
-  // magnitudes below the least code become 0 or the least code; |slopes| <= 1 < 2^0.99
+  // magnitudes below the least code become 0 or the least code; those beyond the largest
+  // (2^0.99) its code: depths in [0, 1] give slopes of at most 1
   const int magnitude = std::min(std::max(steps, larger ? 1 : 0), ZeroCode - 1);
   return value > 0.0 ? ZeroCode + magnitude : ZeroCode - magnitude;
 }
@@ -37,16 +42,16 @@ int SlopeCode(double value, bool up)
 
 vtkSlopeMipmapFilter::vtkSlopeMipmapFilter() = default;
 
-double vtkSlopeMipmapFilter::DecodeSlope(int code)
-{
-  const int m = code - ZeroCode;
-  return m == 0 ? 0.0
-                : (m > 0 ? 1.0 : -1.0) * std::exp2(std::abs(m) / CodesPerOctave + LeastOctave);
-}
-
 float vtkSlopeMipmapFilter::EncodeSlopes(double low, double high)
 {
   return static_cast<float>(SlopeCode(low, false) * 4096 + SlopeCode(high, true));
+}
+
+void vtkSlopeMipmapFilter::PackNode(const double node[5], float texel[3])
+{
+  texel[0] = static_cast<float>(node[0]);
+  texel[1] = EncodeSlopes(node[1], node[2]);
+  texel[2] = EncodeSlopes(node[3], node[4]);
 }
 
 void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArray* output)
@@ -85,38 +90,13 @@ void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArr
     }
   });
 
-  const int top = GetTopLevel(width, height);
-  for (int level = 1; level <= top; ++level)
-  {
-    int origin[2], size[2], childOrigin[2], childSize[2];
-    GetLevelPlacement(width, height, level, origin, size);
-    GetLevelPlacement(width, height, level - 1, childOrigin, childSize);
-    for (int j = 0; j < size[1]; ++j)
-    {
-      int firstRow, lastRow;
-      GetChildRange(j, height, level, firstRow, lastRow);
-      for (int i = 0; i < size[0]; ++i)
-      {
-        int firstColumn, lastColumn;
-        GetChildRange(i, width, level, firstColumn, lastColumn);
-        float* node = at(origin[0] + i, origin[1] + j);
-        const float* first = at(childOrigin[0] + firstColumn, childOrigin[1] + firstRow);
-        std::copy(first, first + Components, node);
-        for (int y = firstRow; y <= lastRow; ++y)
-        {
-          for (int x = firstColumn; x <= lastColumn; ++x)
-          {
-            const float* child = at(childOrigin[0] + x, childOrigin[1] + y);
-            node[0] = std::min(node[0], child[0]);
-            node[1] = std::min(node[1], child[1]);
-            node[2] = std::max(node[2], child[2]);
-            node[3] = std::min(node[3], child[3]);
-            node[4] = std::max(node[4], child[4]);
-          }
-        }
-      }
-    }
-  }
+  ReduceLevels(width, height, Components, values, [](float* node, const float* child) {
+    node[0] = std::min(node[0], child[0]);
+    node[1] = std::min(node[1], child[1]);
+    node[2] = std::max(node[2], child[2]);
+    node[3] = std::min(node[3], child[3]);
+    node[4] = std::max(node[4], child[4]);
+  });
 }
 
 void vtkSlopeMipmapFilter::PrintSelf(ostream& os, vtkIndent indent)

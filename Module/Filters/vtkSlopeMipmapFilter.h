@@ -17,7 +17,7 @@
  * Output: one VTK_FLOAT image, scalars "TopAndSlopes", of the atlas size of
  * vtkMaximumMipmapFilter, five components per texel: the least depth, then the least and
  * largest dD/dx, the least and largest dD/dy. The mapper uploads the boxes in 12-bit
- * logarithmic codes, rounded outward (EncodeSlopes).
+ * logarithmic codes, rounded outward (PackNode).
  */
 #ifndef vtkSlopeMipmapFilter_h
 #define vtkSlopeMipmapFilter_h
@@ -42,8 +42,12 @@ public:
    * round them inward.
    */
   static float EncodeSlopes(double low, double high);
-  /// The value of one code, as the shader computes it.
-  static double DecodeSlope(int code);
+
+  /**
+   * The three floats a node of the output (its five components) is uploaded as: its
+   * least depth and its two slope boxes, each packed by EncodeSlopes.
+   */
+  static void PackNode(const double node[5], float texel[3]);
 
 protected:
   vtkSlopeMipmapFilter();

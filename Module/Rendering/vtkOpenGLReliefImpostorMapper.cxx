@@ -525,9 +525,9 @@ bool vtkOpenGLReliefImpostorMapper::UpdateImpostor(vtkRenderer* ren, vtkActor* a
   {
     this->WarnedSearchMethod = true;
     vtkWarningMacro(<< Mapper::GetSearchMethodAsString(this->SearchMethod)
-                    << " cannot search an impostor: its cones and radii hold for rays that "
-                       "descend into a field, and the views behind the object are searched "
-                       "along rays that rise. MaximumMipmap, exact, searches instead.");
+                    << " cannot search an impostor: it steps only along rays that descend "
+                       "into a field, and the views behind the object are searched along "
+                       "rays that rise. MaximumMipmap, exact, searches instead.");
   }
   if (active != this->ActiveSearchMethod)
   {

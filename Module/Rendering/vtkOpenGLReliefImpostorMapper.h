@@ -61,9 +61,9 @@ public:
    * - ExactDDA: every cell the ray crosses, exact.
    * - Linear, LinearBinary, Secant: LinearSteps fixed steps through the box, then
    *   BinarySteps of refinement; features thinner than a step are missed.
-   * ConeStep and SafetyRadius hold cones and radii for rays that descend into a field;
-   * behind the object the views' rays rise, so they search with MaximumMipmap, with a
-   * warning. Changing the method rebuilds the shader once.
+   * ConeStep, SafetyRadius, RobustBinary and SlopeMipmap step only along rays that
+   * descend into a field; behind the object the views' rays rise, so they search with
+   * MaximumMipmap, with a warning. Changing the method rebuilds the shader once.
    */
   void SetSearchMethod(int method);
   vtkGetMacro(SearchMethod, int);

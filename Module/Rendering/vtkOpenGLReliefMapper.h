@@ -158,14 +158,14 @@ public:
   /**
    * A new instance of the filter that makes the acceleration image `method` reads
    * (vtkSafetyRadiusFilter, vtkConeStepMapFilter, vtkMaximumMipmapFilter or
-   * vtkSlopeMipmapFilter), or nullptr
-   * for a method that reads none. The caller owns it.
+   * vtkSlopeMipmapFilter), or nullptr for a method that reads none. The caller owns it.
    */
   VTK_NEWINSTANCE static vtkReliefAccelerationFilter* NewAccelerationFilter(int method);
 
   ///@{
   /**
-   * The error tolerance e of the safety radii the mapper builds for SafetyRadius (see
+   * The error tolerance e of the safety radii the mapper builds for SafetyRadius and
+   * RobustBinary (see
    * vtkSafetyRadiusFilter), in units of relief depth: 0 (default) is exact; e > 0 lets
    * the search step over the ray where it is at most e below the field. Values out of
    * [0, 1] (the whole depth) are clamped, with a warning. A precomputed acceleration

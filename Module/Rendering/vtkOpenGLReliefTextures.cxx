@@ -96,8 +96,7 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
   return codes;
 }
 
-// The three floats a node of vtkSlopeMipmapFilter's atlas is uploaded as: its least depth
-// and its two slope boxes, each packed in one float (EncodeSlopes, rounded outward).
+// vtkSlopeMipmapFilter's atlas as uploaded: three floats a node (PackNode).
 vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(vtkImageData* atlas)
 {
   vtkDataArray* nodes = atlas->GetPointData()->GetScalars();
@@ -107,12 +106,9 @@ vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(vtkImageData* atlas)
   vtkSMPTools::For(0, nodes->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType node = begin; node < end; ++node)
     {
-      double values[5]; // least depth, dD/dx bounds, dD/dy bounds
+      double values[5];
       nodes->GetTuple(node, values);
-      float* texel = packed->GetPointer(3 * node);
-      texel[0] = static_cast<float>(values[0]);
-      texel[1] = vtkSlopeMipmapFilter::EncodeSlopes(values[1], values[2]);
-      texel[2] = vtkSlopeMipmapFilter::EncodeSlopes(values[3], values[4]);
+      vtkSlopeMipmapFilter::PackNode(values, packed->GetPointer(3 * node));
     }
   });
   return packed;

@@ -294,7 +294,8 @@ def main():
         if os.path.exists(stale):
             os.remove(stale)
     command = [arguments.bench, "--data", arguments.data, "--quick", "--only",
-               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing,impostors,robust,exact",
+               "accuracy,sweeps,quadric,derivative,shading,automatic,sharing,impostors,"
+               "robust,exact",
                "--method", "cone-step", "--results", results]
     run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(run.stdout)

@@ -439,7 +439,7 @@ int main(int argc, char* argv[])
                    "                      robust, exact)\n"
                    "                     [--method NAME (the accuracy study's one method)]\n"
                    "                     [--map FILE (a height map for the methods table,\n"
-                   "                      besides Data's; repeatable)]\n"
+                   "                      besides Data's; relative to --data; repeatable)]\n"
                    "                     [--report FILE.md] [--results FILE.md]\n"
                    "Times relief mapping against plain texturing at 800x600, every search\n"
                    "method at three height-map sizes, every method's speed against its\n"

@@ -102,9 +102,11 @@ inline DepthPyramid PyramidOf(const DepthField& field)
 inline SlopePyramid SlopesOf(const DepthField& field)
 {
   vtkNew<vtkSlopeMipmapFilter> filter;
-  return PyramidFromAtlas<vec4>(filter, field, [](const float* texel) {
-    return vec4(texel[0], vtkSlopeMipmapFilter::EncodeSlopes(texel[1], texel[2]),
-      vtkSlopeMipmapFilter::EncodeSlopes(texel[3], texel[4]), 0.0f);
+  return PyramidFromAtlas<vec4>(filter, field, [](const float* node) {
+    const double values[5] = { node[0], node[1], node[2], node[3], node[4] };
+    float texel[3];
+    vtkSlopeMipmapFilter::PackNode(values, texel);
+    return vec4(texel[0], texel[1], texel[2], 0.0f);
   });
 }
 

@@ -7,6 +7,7 @@
 #include "vtkConeStepMapFilter.h"
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkSafetyRadiusFilter.h"
+#include "vtkSlopeMipmapFilter.h"
 
 #include "vtkCommand.h"
 #include "vtkInformation.h"
@@ -22,7 +23,8 @@ template <typename Filter>
 class ReliefAccelerationFilter : public ::testing::Test
 {
 };
-using Filters = ::testing::Types<vtkMaximumMipmapFilter, vtkSafetyRadiusFilter, vtkConeStepMapFilter>;
+using Filters = ::testing::Types<vtkMaximumMipmapFilter, vtkSlopeMipmapFilter,
+  vtkSafetyRadiusFilter, vtkConeStepMapFilter>;
 TYPED_TEST_SUITE(ReliefAccelerationFilter, Filters);
 
 vtkSmartPointer<vtkImageData> UniformImage(int x, int y, int z, int components)

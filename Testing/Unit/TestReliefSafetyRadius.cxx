@@ -148,6 +148,12 @@ Tally TallyWithin(const Scene& scene, const SafetyRadiusMap& radii, double toler
       (hit.t >= first && (hit.t <= deep || HitError(scene.Field, ray, hit.t, deep) <= Tolerance));
     tally.OutOfBound += hit.hit && inside ? 0 : 1;
     tally.OffTheField += hit.hit && std::abs(gap) <= Tolerance ? 0 : 1;
+    if ((!inside || std::abs(gap) > Tolerance) && tally.OutOfBound + tally.OffTheField <= 3)
+    {
+      std::cout << scene.Name << ", e " << tolerance << ": t " << hit.t << ", first hit "
+                << first << ", first point " << tolerance << " below " << deep
+                << ", gap at the hit " << gap << "\n";
+    }
   }
   tally.Samples /= RayCount;
   return tally;

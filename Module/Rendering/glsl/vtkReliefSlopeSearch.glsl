@@ -14,9 +14,10 @@
 // Newton's and the secant's estimates put it, within what the rates allow, each read solving
 // the whole cell: with one crossing, the first zero of a cell entered above the field is it.
 // Exact: every skip is proven, every hit solved from a point known above the field.
-// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs, besides
-// vtkReliefGridSearch.glsl's pyramid, RELIEF_SLOPE_NODE(node, level): vec4 (least depth,
-// packed dD/dx bounds, packed dD/dy bounds, unused) of a node, unpacked by reliefSlopeDecode.
+// Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
+// vtkReliefGridSearch.glsl (its pyramid's levels) and vtkReliefSafetySearch.glsl
+// (reliefCellAfter) before it, and RELIEF_SLOPE_NODE(node, level): vec4 (least depth, packed
+// dD/dx bounds, packed dD/dy bounds, unused) of a node, unpacked by reliefSlopeDecode.
 
 #ifndef RELIEF_SLOPE_NODE
 #define RELIEF_SLOPE_NODE(node, level) texelFetch(reliefAccelerationTexture, \
@@ -62,11 +63,12 @@ vec2 reliefPatchGap(ReliefGridRay grid, vec2 cell, vec4 depths, float t)
   return vec2(gap, rate);
 }
 
-// The single crossing in [above, below]: gap and rate at `below` known (gapBelow), the
-// gap falling at a rate within `rates` when rates.y < 0. Each probe reads the cell where
-// the secant (both ends known) or Newton (from below) puts the crossing, bounded by the
-// rates, and solves it over its part of the bracket: the crossing, or a new end with its
-// gap known exactly; a probe that did not halve the bracket is followed by a bisection.
+// The crossing in [above, below], where the gap falls all along (at a rate within
+// `rates`, rates.y < 0), so there is one, and every point before it is above the field:
+// gap and rate at `below` known (gapBelow, gap < 0). Each probe reads the cell where the
+// secant (both ends known) or Newton (from below) puts the crossing, bounded by the rates,
+// and solves it over its part of the bracket: the crossing, or a new end with its gap
+// known exactly; a probe that did not halve the bracket is followed by a bisection.
 ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, float below,
   vec2 gapBelow, vec2 rates, int samples)
 {
@@ -75,26 +77,21 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
   vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
   float gapAbove = -1.0f;
   float lastWidth = 2.0f * (below - above);
-  bool bounded = rates.y < 0.0f;
   for (int i = 0; i < 64 && above < below; ++i)
   {
-    float low = above;
-    float high = below;
-    if (bounded)
+    float low = max(above, below - gapBelow.x / rates.y);
+    float high = min(below, below - gapBelow.x / rates.x);
+    if (gapAbove > 0.0f)
     {
-      low = max(low, below - gapBelow.x / rates.y);
-      high = min(high, below - gapBelow.x / rates.x);
-      if (gapAbove > 0.0f)
-      {
-        low = max(low, above - gapAbove / rates.x);
-        high = min(high, above - gapAbove / rates.y);
-      }
+      low = max(low, above - gapAbove / rates.x);
+      high = min(high, above - gapAbove / rates.y);
     }
     float width = below - above;
     float estimate = gapAbove > 0.0f
       ? above + width * gapAbove / (gapAbove - gapBelow.x)
       : (gapBelow.y < 0.0f ? below - gapBelow.x / gapBelow.y : 0.5f * (low + high));
-    float probe = clamp(width > 0.5f * lastWidth ? 0.5f * (low + high) : estimate, low, high);
+    // rounding may cross the bounds: then `high` (GLSL's clamp is undefined there)
+    float probe = min(max(width > 0.5f * lastWidth ? 0.5f * (low + high) : estimate, low), high);
     lastWidth = width;
     vec2 cell = floor(reliefGridAt(grid, probe));
     vec2 behind = vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y);
@@ -113,7 +110,11 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
     {
       below = tIn;
       gapBelow = reliefPatchGap(grid, cell, depths, tIn);
-      gapBelow.x = min(gapBelow.x, 0.0f);
+      if (gapBelow.x >= 0.0f)
+      {
+        // on the field at the cell's entry, within rounding: that is the crossing
+        return reliefGridHit(ray, grid, tIn, true, samples);
+      }
     }
     else
     {
@@ -139,17 +140,13 @@ ReliefHit reliefSlopeBracket(ReliefRay ray, ReliefGridRay grid, float above, flo
   vec2 entries = reliefCrossings(grid, behind, signs, inverseRun);
   float tIn = min(max(max(entries.x, entries.y), above), below);
   float back = reliefCellIntersection(grid, cell, depths, tIn, below);
-  if (back >= 0.0f && (back > tIn || tIn <= above))
-  {
-    return reliefGridHit(ray, grid, back, true, samples);
-  }
-  if (tIn <= above)
-  {
-    ReliefHit walk = reliefWalkCells(ray, grid, above, below, samples);
-    return walk.hit ? walk : reliefGridHit(ray, grid, below, true, walk.samples);
-  }
   vec2 gap = reliefPatchGap(grid, cell, depths, tIn);
-  gap.x = min(gap.x, 0.0f);
+  // no crossing in the cell (the exit's gap was 0 within rounding), or one inside it, or
+  // the bracket all in it: the hit is found
+  if (back < 0.0f || back > tIn || tIn <= above || gap.x >= 0.0f)
+  {
+    return reliefGridHit(ray, grid, back >= 0.0f ? back : below, true, samples);
+  }
   return reliefSlopeRefine(ray, grid, above, tIn, gap, rates, samples);
 }
 
@@ -159,7 +156,6 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
   ReliefGridRay grid = reliefGridRay(ray, size);
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
-  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
   // start two levels below the one whose nodes span the ray's whole run: the slopes
   // prove more in smaller nodes, and climbing is cheap
   float run = max(abs(grid.direction.x), abs(grid.direction.y));
@@ -208,7 +204,8 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
       {
         // (d): the exit's cell says whether the one crossing is in the node
         samples += 1;
-        vec2 exitCell = floor(reliefGridAt(grid, max(t, tOut - 1e-4f / max(run, 1.0f))));
+        // the node's cell at the exit, whatever side of the border rounding puts it
+        vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
         vec4 exitDepths = RELIEF_CELL_DEPTHS(exitCell);
         float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
         if (gapOut <= 0.0f)
