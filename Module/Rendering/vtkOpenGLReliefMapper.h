@@ -116,7 +116,8 @@ public:
    * - SlopeMipmap: MaximumMipmap whose nodes also bound the slopes under them
    *   (vtkSlopeMipmapFilter), so that one node read may also prove that the ray cannot
    *   come down to the field before the node's exit, or meets it at most once there.
-   *   Exact; the fewest samples at grazing angles (Documentation/methods.md).
+   *   Exact; fewer samples than ConeStep at most sizes and angles, and the shortest
+   *   worst cases, but more work per sample (Documentation/methods.md).
    * The exact methods read the full-resolution field and ignore the step counts.
    * Changing the method rebuilds the shader once.
    */
