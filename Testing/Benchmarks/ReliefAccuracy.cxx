@@ -261,8 +261,10 @@ std::vector<Setting> Settings()
     label << "e = " << tolerance;
     settings.push_back({ "SafetyRadius", label.str(), Mapper::SAFETY_RADIUS, 10, 5, tolerance });
   }
+  settings.push_back({ "RobustBinary", "e = 0.05", Mapper::ROBUST_BINARY, 10, 5, 0.05 });
   settings.push_back({ "ConeStep", "", Mapper::CONE_STEP });
   settings.push_back({ "MaximumMipmap", "", Mapper::MAXIMUM_MIPMAP });
+  settings.push_back({ "SlopeMipmap", "", Mapper::SLOPE_MIPMAP });
   for (double pixels : { 0.5, 2.0 })
   {
     std::ostringstream label;
