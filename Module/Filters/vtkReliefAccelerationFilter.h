@@ -4,12 +4,11 @@
  *
  * vtkMaximumMipmapFilter, vtkSlopeMipmapFilter, vtkSafetyRadiusFilter and
  * vtkConeStepMapFilter turn a relief height field into an image the mapper uploads as a
- * texture. They share what this class
- * does: read the depths from vtkReliefTextureFilter's output (four components, depth in
- * the last) or from a one-component depth image, ask for the whole input whatever part
- * of the output is requested (every value may depend on the whole map), report an
- * unusable input as one error with an empty output, and produce a VTK_FLOAT image with
- * its origin at 0 and the input's spacing. Subclasses say how large the output is and
+ * texture. They share what this class does: read the depths from vtkReliefTextureFilter's
+ * output (four components, depth in the last) or from a one-component depth image, ask
+ * for the whole input whatever part of the output is requested (every value may depend on
+ * the whole map), report an unusable input as one error with an empty output, and produce
+ * a VTK_FLOAT image with its origin at 0 and the input's spacing. Subclasses say how large the output is and
  * compute it; long computations run their rows through ForRows, which shares them among
  * threads with vtkSMPTools and reports progress between slices, from the calling thread
  * (observers may touch a GUI).

@@ -15,8 +15,10 @@
 #include <iomanip>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <random>
 #include <sstream>
+#include <utility>
 
 namespace
 {
@@ -207,6 +209,8 @@ std::string ReliefRobustStudy::Report(const Options& options)
     const DepthField field = StonesAt(size);
     CurrentField = &field;
     const int scaledMaximum = std::min(255, std::max(32, size / 16));
+    // the radii of each (e, MaximumRadius), made once for every angle and both searches
+    std::map<std::pair<double, int>, SafetyRadiusMap> radiiOf;
     for (double angle : options.Angles)
     {
       const std::vector<ReliefRay> rays = RaysAt(angle, options.Rays);
@@ -221,11 +225,14 @@ std::string ReliefRobustStudy::Report(const Options& options)
         const int maximum = setting.ScaledMaximum ? scaledMaximum : 32;
         const bool searchesRadii = setting.Search == &reliefSearchSafetyRadius ||
           setting.Search == &reliefSearchRobustBinary;
-        SafetyRadiusMap radii;
         if (searchesRadii)
         {
-          radii = RadiiOf(field, setting.Tolerance, maximum);
-          CurrentRadii = &radii;
+          const std::pair<double, int> key(setting.Tolerance, maximum);
+          if (radiiOf.find(key) == radiiOf.end())
+          {
+            radiiOf[key] = RadiiOf(field, setting.Tolerance, maximum);
+          }
+          CurrentRadii = &radiiOf[key];
         }
         const DepthField deeper = Lowered(field, setting.Tolerance);
         Row row;

@@ -13,8 +13,9 @@
 // described by vtkReliefSearchMethod's uniforms.
 uniform int reliefPyramidTop;
 uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
-#define RELIEF_PYRAMID_DEPTH(node, level) texelFetch(reliefAccelerationTexture, \
-  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0).r
+#define RELIEF_PYRAMID_TEXEL(node, level) texelFetch(reliefAccelerationTexture, \
+  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0)
+#define RELIEF_PYRAMID_DEPTH(node, level) RELIEF_PYRAMID_TEXEL(node, level).r
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
 #endif
 
@@ -242,6 +243,14 @@ vec2 reliefPyramidSize(int level)
   return vec2(max(size.x, 1.0f), max(size.y, 1.0f));
 }
 
+// The level whose nodes span about the ray's whole run (any level will do, so a driver's
+// inexact log2 costs nothing).
+int reliefPyramidRunLevel(ReliefGridRay grid)
+{
+  float run = max(abs(grid.direction.x), abs(grid.direction.y));
+  return int(ceil(log2(max(run, 1.0f))));
+}
+
 vec2 reliefPyramidParent(vec2 node, int level)
 {
   vec2 parentSize = reliefPyramidSize(level + 1);
@@ -255,10 +264,8 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray, int linearSteps, int refineme
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
   // start at the level whose nodes span about the ray's whole run, not at the root: a
-  // steep ray has no long stretch to skip, and would only pay the descent (any level
-  // will do, so a driver's inexact log2 costs nothing)
-  float run = max(abs(grid.direction.x), abs(grid.direction.y));
-  int level = min(RELIEF_PYRAMID_TOP, int(ceil(log2(max(run, 1.0f)))));
+  // steep ray has no long stretch to skip, and would only pay the descent
+  int level = min(RELIEF_PYRAMID_TOP, reliefPyramidRunLevel(grid));
   vec2 tile = floor(vec2(grid.origin.x / size.x, grid.origin.y / size.y));
   vec2 startSize = reliefPyramidSize(level);
   vec2 node = min(floor((grid.origin - vec2(tile.x * size.x, tile.y * size.y)) / float(1 << level)),

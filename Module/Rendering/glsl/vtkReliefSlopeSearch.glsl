@@ -20,8 +20,7 @@
 // dD/dx bounds, packed dD/dy bounds, unused) of a node, unpacked by reliefSlopeDecode.
 
 #ifndef RELIEF_SLOPE_NODE
-#define RELIEF_SLOPE_NODE(node, level) texelFetch(reliefAccelerationTexture, \
-  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0)
+#define RELIEF_SLOPE_NODE(node, level) RELIEF_PYRAMID_TEXEL(node, level)
 #endif
 
 // One code of vtkSlopeMipmapFilter::EncodeSlopes: 2048 is 0, each code away from it one
@@ -158,8 +157,7 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
   vec2 inverseRun = reliefInverseRun(grid);
   // start two levels below the one whose nodes span the ray's whole run: the slopes
   // prove more in smaller nodes, and climbing is cheap
-  float run = max(abs(grid.direction.x), abs(grid.direction.y));
-  int level = clamp(int(ceil(log2(max(run, 1.0f)))) - 2, 0, RELIEF_PYRAMID_TOP);
+  int level = clamp(reliefPyramidRunLevel(grid) - 2, 0, RELIEF_PYRAMID_TOP);
   float t = 0.0f;
   float gapLow = 0.0f; // a lower bound of the gap at t
   int samples = 0;
