@@ -96,18 +96,29 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
   return codes;
 }
 
-// vtkSlopeMipmapFilter's atlas as uploaded: three floats a node (PackNode).
-vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(vtkImageData* atlas)
+// vtkSlopeMipmapFilter's atlas as uploaded: three floats a node (PackNode), without its
+// level 0, the atlas's first `levelZeroWidth` columns: SlopeMipmap solves single cells from
+// the height map and never reads them (vtkReliefGridSearch.glsl's RELIEF_SLOPE_NODE), and
+// they are two thirds of the atlas. `dimensions` become the uploaded image's (one column
+// where the atlas has no other level).
+vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(
+  vtkImageData* atlas, int levelZeroWidth, int dimensions[3])
 {
   vtkDataArray* nodes = atlas->GetPointData()->GetScalars();
+  atlas->GetDimensions(dimensions);
+  const int atlasWidth = dimensions[0];
+  const int first = std::min(levelZeroWidth, atlasWidth - 1);
+  dimensions[0] = atlasWidth - first;
   auto packed = vtkSmartPointer<vtkFloatArray>::New();
   packed->SetNumberOfComponents(3);
-  packed->SetNumberOfTuples(nodes->GetNumberOfTuples());
-  vtkSMPTools::For(0, nodes->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+  packed->SetNumberOfTuples(static_cast<vtkIdType>(dimensions[0]) * dimensions[1]);
+  vtkSMPTools::For(0, packed->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType node = begin; node < end; ++node)
     {
+      const vtkIdType row = node / dimensions[0];
+      const vtkIdType column = first + node % dimensions[0];
       double values[5];
-      nodes->GetTuple(node, values);
+      nodes->GetTuple(row * atlasWidth + column, values);
       vtkSlopeMipmapFilter::PackNode(values, packed->GetPointer(3 * node));
     }
   });
@@ -390,6 +401,8 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   {
     return false; // its filter has said why
   }
+  int dimensions[3];
+  this->Image->GetDimensions(dimensions);
   const bool cones = method.Encoding == vtkReliefSearchMethod::CONE_BYTES;
   if (cones)
   {
@@ -397,14 +410,14 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   }
   else if (method.Encoding == vtkReliefSearchMethod::SLOPE_CODES)
   {
-    values = EncodeSlopeMipmap(this->Image);
+    values = EncodeSlopeMipmap(this->Image, this->Relief->Size[0], dimensions);
   }
   const int components = values->GetNumberOfComponents();
   const unsigned int internalFormat = cones ? GL_RG8
     : components == 1                       ? GL_R32F
     : components == 2                       ? GL_RG32F
                                             : GL_RGB32F;
-  if (!UploadTexture(this->Texture, window, this->Image->GetDimensions(), values, internalFormat,
+  if (!UploadTexture(this->Texture, window, dimensions, values, internalFormat,
         vtkTextureObject::Nearest))
   {
     vtkErrorWithObjectMacro(
