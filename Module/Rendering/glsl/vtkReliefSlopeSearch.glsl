@@ -17,11 +17,8 @@
 // Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
 // vtkReliefGridSearch.glsl (its pyramid's levels) and vtkReliefSafetySearch.glsl
 // (reliefCellAfter) before it, and RELIEF_SLOPE_NODE(node, level): vec4 (least depth, packed
-// dD/dx bounds, packed dD/dy bounds, unused) of a node, unpacked by reliefSlopeDecode.
-
-#ifndef RELIEF_SLOPE_NODE
-#define RELIEF_SLOPE_NODE(node, level) RELIEF_PYRAMID_TEXEL(node, level)
-#endif
+// dD/dx bounds, packed dD/dy bounds, unused) of a node above level 0, unpacked by
+// reliefSlopeDecode (the GPU's in vtkReliefGridSearch.glsl).
 
 // One code of vtkSlopeMipmapFilter::EncodeSlopes: 2048 is 0, each code away from it one
 // 128th of an octave from 2^-15.
