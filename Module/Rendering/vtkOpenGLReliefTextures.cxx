@@ -96,18 +96,23 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
   return codes;
 }
 
-// vtkSlopeMipmapFilter's atlas as uploaded: three floats a node (PackNode), without its
-// level 0, the atlas's first `levelZeroWidth` columns: SlopeMipmap solves single cells from
-// the height map and never reads them (vtkReliefGridSearch.glsl's RELIEF_SLOPE_NODE), and
-// they are two thirds of the atlas. `dimensions` become the uploaded image's (one column
-// where the atlas has no other level).
+// vtkSlopeMipmapFilter's atlas of a reliefSize map as uploaded: three floats a node
+// (PackNode), from level 1's first column on: SlopeMipmap solves single cells from the
+// height map and never reads level 0 (vtkReliefGridSearch.glsl's RELIEF_SLOPE_NODE), two
+// thirds of the atlas. `dimensions` become the uploaded image's (the last column where the
+// atlas has no level 1).
 vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(
-  vtkImageData* atlas, int levelZeroWidth, int dimensions[3])
+  vtkImageData* atlas, const int reliefSize[2], int dimensions[3])
 {
   vtkDataArray* nodes = atlas->GetPointData()->GetScalars();
   atlas->GetDimensions(dimensions);
   const int atlasWidth = dimensions[0];
-  const int first = std::min(levelZeroWidth, atlasWidth - 1);
+  int levelOne[2];
+  int levelOneSize[2];
+  const int first = vtkSlopeMipmapFilter::GetLevelPlacement(
+                      reliefSize[0], reliefSize[1], 1, levelOne, levelOneSize)
+    ? levelOne[0]
+    : atlasWidth - 1;
   dimensions[0] = atlasWidth - first;
   auto packed = vtkSmartPointer<vtkFloatArray>::New();
   packed->SetNumberOfComponents(3);
@@ -410,7 +415,7 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   }
   else if (method.Encoding == vtkReliefSearchMethod::SLOPE_CODES)
   {
-    values = EncodeSlopeMipmap(this->Image, this->Relief->Size[0], dimensions);
+    values = EncodeSlopeMipmap(this->Image, this->Relief->Size, dimensions);
   }
   const int components = values->GetNumberOfComponents();
   const unsigned int internalFormat = cones ? GL_RG8
