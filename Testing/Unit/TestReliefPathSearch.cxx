@@ -450,6 +450,13 @@ double RegionShareError(const Pixel& pixel, float turn = 0.0f)
     regionRay.origin.x += offset * regions.right.x;
     regionRay.origin.y += offset * regions.right.y;
     const ReliefHit hit = reliefPathElementWalk(regionRay, nearest.element, nearest.near);
+    // what the shader lights the region with (reliefPathRegionSurfaces) is what its walk met
+    const vec3 surface(reliefPathEntry(regions.normalsU, r), reliefPathEntry(regions.normalsV, r),
+      reliefPathEntry(regions.normalsDepth, r));
+    EXPECT_GT(dot(normalize(surface), normalize(reliefPathHitNormal)), 1.0f - 1e-5f)
+      << "region " << r << " of " << regions.count;
+    EXPECT_EQ(reliefPathEntry(regions.materials, r), reliefPathHitMaterial)
+      << "region " << r << " of " << regions.count;
     const float weight = reliefPathEntry(regions.weights, r);
     EXPECT_GE(weight, 0.0f);
     total += weight;

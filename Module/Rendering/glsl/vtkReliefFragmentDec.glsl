@@ -254,13 +254,12 @@ const vec2 reliefRotatedGrid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.1
 // the pixel of the view ray's path (judged, as the path-feature paper does, s5.7, on the
 // cells the view ray passed) the pixel is antialiased, elsewhere it all meets the plain
 // base. Region sampling (s5.7) where one element alone is that near: the footprint's
-// regions across it (reliefPathRegions), each walked at its middle through that element
-// and weighted by its share of the pixel (one region: all of the pixel sees what its
-// centre sees); where the regions cannot tell (an end, an intersection, a profile that
-// both cuts and adds, more than four regions), the rays through four points of the pixel
-// (reliefRotatedGrid), each walked through all the features and lit where it hits. Both
-// kinds of walk are one loop of one walk's code: on llvmpipe, which runs eight fragments
-// together and every branch whether taken or not, two loops cost each fragment both.
+// regions across it (reliefPathRegions), each lit as the ray at its middle meets that
+// element (reliefPathRegionSurfaces) and weighted by its share of the pixel (one region:
+// all of the pixel sees what its centre sees); where the regions cannot tell (an end, an
+// intersection, a profile that both cuts and adds, more than four regions), the rays
+// through four points of the pixel (reliefRotatedGrid), each walked through all the
+// features and lit where it hits.
 vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 uv, vec3 slope,
   vec3 centre, inout int samples)
 {
@@ -270,11 +269,7 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
   bool near = reliefDepthScale > 0.0 && reliefPathNearest.gap <= reach;
   ReliefRay ray = reliefScreenViewRay(frame, fragment);
   ReliefPathNearest nearest = reliefPathNearest;
-  ReliefPathRegions regions;
-  regions.count = 0;
-  regions.offsets = vec4(0.0);
-  regions.weights = vec4(0.0);
-  regions.right = vec2(0.0);
+  ReliefPathRegions regions = reliefPathNoRegions();
 #ifdef RELIEF_PATH_RELIEF_BASE
   // on a relief base (vtkReliefPathOnRelief.glsl) the regions' plain base is not plain:
   // the footprint's rays wherever a feature is near; elsewhere, as the relief mapper's
@@ -316,36 +311,37 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
     reliefAddFootprintNormal(centre, 1.0);
     return centre;
   }
-  bool regional = regions.count > 1;
-  int walks = regional ? regions.count : 4;
-  for (int k = 0; k < 4 && k < walks; ++k)
+  if (regions.count > 1)
   {
-    ReliefRay walked = ray;
-    if (regional)
+    samples += 1; // one element, tested for the regions' rays together
+    for (int k = 0; k < 4 && k < regions.count; ++k)
     {
-      walked.origin += vec3(reliefPathEntry(regions.offsets, k) * regions.right, 0.0);
+      reliefPathHitNormal = vec3(reliefPathEntry(regions.normalsU, k),
+        reliefPathEntry(regions.normalsV, k), reliefPathEntry(regions.normalsDepth, k));
+      reliefPathHitMaterial = reliefPathEntry(regions.materials, k);
+      reliefAddFootprintNormal(reliefFieldNormal(uv, slope), reliefPathEntry(regions.weights, k));
     }
-    else
-    {
-      ReliefFragment quarter = fragment;
-      quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
-        reliefRotatedGrid[k].y * fragment.tcoordAlongY;
-      walked = reliefScreenViewRay(frame, quarter);
-    }
+    return reliefFootprintMean(centre);
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    ReliefFragment quarter = fragment;
+    quarter.tcoord += reliefRotatedGrid[k].x * fragment.tcoordAlongX +
+      reliefRotatedGrid[k].y * fragment.tcoordAlongY;
+    ReliefRay walked = reliefScreenViewRay(frame, quarter);
 #ifdef RELIEF_PATH_RELIEF_BASE
     ReliefHit hit = RELIEF_SEARCH(walked, reliefLinearSteps, reliefBinarySteps);
 #else
-    ReliefHit hit = reliefPathElementWalk(walked, regional ? nearest.element : 0, nearest.near);
+    ReliefHit hit = reliefPathElementWalk(walked, 0, vec2(0.0));
 #endif
     samples += hit.samples;
-    if (regional || !reliefFrameRayLeft(frame, walked, hit))
+    if (!reliefFrameRayLeft(frame, walked, hit))
     {
-      vec2 at = regional ? uv : hit.position.xy - round(hit.position.xy - uv);
       reliefAddFootprintNormal(
-        reliefFieldNormal(at, slope), regional ? reliefPathEntry(regions.weights, k) : 1.0);
+        reliefFieldNormal(hit.position.xy - round(hit.position.xy - uv), slope), 1.0);
     }
   }
-  for (int k = 0; k < reliefFootprintCount && !regional; ++k)
+  for (int k = 0; k < reliefFootprintCount; ++k)
   {
     reliefFootprintWeights[k] /= float(reliefFootprintCount);
   }

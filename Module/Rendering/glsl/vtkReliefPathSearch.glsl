@@ -127,7 +127,7 @@ struct ReliefPathElement
   float priority;
   int joins;       // ReliefPathNearest's
   int rounded;     // 1: the profile is revolved about its start, 2: about its end (not
-                   // where its path goes on exactly; at both ends of a region walk's)
+                   // where its path goes on exactly; at both ends of an element alone)
 };
 
 // Whether the element's profile both cuts below the base and adds above it.
@@ -315,7 +315,7 @@ float reliefPathStray(int texel, float past, float halfExtent)
 }
 
 // Element `texel` of a cell's list, placed near `near`. Element e alone (a list of -e:
-// region sampling's walks, reliefPathElementWalk) goes on straight through its joins, as
+// region sampling's, reliefPathRegions) goes on straight through its joins, as
 // far as the elements there reach, the perturbation's scale going on as along its path
 // (reliefPathRegions judges where the path's turn there strays too far from that).
 ReliefPathElement reliefPathListedElement(int list, int texel, vec2 near)
@@ -919,8 +919,8 @@ ReliefPathTransition reliefPathCellEntry(
 // The path-feature walk of a ray from tStart to tEnd; the first entry into solid matter,
 // or a miss at tEnd. `samples` counts cells visited and elements tested. Where `alone` is
 // an element's data texel, through that element alone, its copy of the tile nearest to
-// aloneNear, as one cell from tStart to tEnd (region sampling's walks, in the same code as
-// the footprint's other rays).
+// aloneNear, as one cell from tStart to tEnd: what region sampling's rays meet
+// (reliefPathRegionSurfaces finds it in one pass; the unit tests compare the two).
 ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec2 aloneNear)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
@@ -1097,7 +1097,126 @@ struct ReliefPathRegions
   vec4 offsets;
   vec4 weights;
   vec2 right;
+  // what each region's ray meets (reliefPathRegionSurfaces): its outward normal, as
+  // reliefPathHitNormal, by component, and its material, as reliefPathHitMaterial
+  vec4 normalsU;
+  vec4 normalsV;
+  vec4 normalsDepth;
+  vec4 materials;
 };
+
+ReliefPathRegions reliefPathNoRegions()
+{
+  ReliefPathRegions regions;
+  regions.count = 0;
+  regions.offsets = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.weights = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.right = vec2(0.0f, 0.0f);
+  regions.normalsU = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.normalsV = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  regions.normalsDepth = vec4(-1.0f, -1.0f, -1.0f, -1.0f);
+  regions.materials = vec4(-1.0f, -1.0f, -1.0f, -1.0f);
+  return regions;
+}
+
+// Which side of the sweep's line each region's ray sees the profile point p on
+// (reliefPathSide, the line's x being the same for all of them).
+bvec4 reliefPathRegionSides(float lineX, vec4 lineY, vec4 lineZ, vec2 p)
+{
+  return greaterThan(vec4(lineX * p.x, lineX * p.x, lineX * p.x, lineX * p.x) + lineY * p.y +
+      lineZ, vec4(0.0f, 0.0f, 0.0f, 0.0f));
+}
+
+// What the regions' rays meet: each ray, at its region's offset across the element, through
+// the element alone, beside its straight part (where the regions hold) and across a profile
+// that only cuts or only adds (reliefPathMixes refuses the others). A cut's ray that
+// reaches the base within the cut's opening goes on in air to the first facet after it
+// (where it leaves the profile's inside; the facet that closes the profile at the base is
+// passed, as the walk starts a cut's crossings just after the base); an addition's ray
+// meets the first facet it crosses above the base (one that tops out at depth 0, where the
+// ray starts); any other meets the base. That is what their walks find
+// (reliefPathElementWalk; the unit tests compare the two), in one pass over the profile for
+// the four rays together: on llvmpipe each walk costs a pass of the whole walk's code.
+ReliefPathRegions reliefPathRegionSurfaces(
+  ReliefPathRegions regions, ReliefPathElement element, ReliefRay ray, float base)
+{
+  ReliefPathSweep sweep = reliefPathSweepOf(element, ray, base);
+  // a region's ray starts offset along `right`: its h0.x moves by offset / half width
+  vec4 h0x = vec4(sweep.h0.x, sweep.h0.x, sweep.h0.x, sweep.h0.x) +
+    regions.offsets / element.halfWidth;
+  vec4 h0y = vec4(sweep.h0.y, sweep.h0.y, sweep.h0.y, sweep.h0.y);
+  vec4 h0z = vec4(sweep.h0.z, sweep.h0.z, sweep.h0.z, sweep.h0.z);
+  vec4 none = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  vec4 unmet = vec4(1e30f, 1e30f, 1e30f, 1e30f);
+  float tBase = (base - ray.origin.z) / ray.direction.z;
+  vec4 baseT = vec4(tBase, tBase, tBase, tBase);
+  float scaleAtBase = sweep.h0.z + tBase * sweep.h1.z;
+  vec4 xAtBase = (h0x + baseT * sweep.h1.x) / max(scaleAtBase, 1e-6f);
+  bool cut = element.top >= 0.0f;
+  float lineX = sweep.h0.y * sweep.h1.z - sweep.h0.z * sweep.h1.y;
+  vec4 lineY = h0z * sweep.h1.x - h0x * sweep.h1.z;
+  vec4 lineZ = h0x * sweep.h1.y - h0y * sweep.h1.x;
+  vec4 openings = none; // the profile's edges right of the base point, just below the base
+  vec4 first = unmet;
+  vec4 facetX = none;
+  vec4 facetY = none;
+  vec4 facetZ = none;
+  vec2 previous = reliefPathLastPoint(element);
+  bvec4 previousSide = reliefPathRegionSides(lineX, lineY, lineZ, previous);
+  vec4 pair = none;
+  for (int k = 0; k < RELIEF_PATH_PROFILE_POINTS && k < element.points; ++k)
+  {
+    pair = k % 2 == 0 ? RELIEF_PATH_TEXEL(element.profile + k / 2) : pair;
+    vec2 point = reliefPathPairPoint(pair, k);
+    if ((point.y > RELIEF_PATH_OPENING) != (previous.y > RELIEF_PATH_OPENING))
+    {
+      float x = point.x +
+        (RELIEF_PATH_OPENING - point.y) * (previous.x - point.x) / (previous.y - point.y);
+      openings += vec4(lessThan(xAtBase, vec4(x, x, x, x)));
+    }
+    // the facet's crossing for each ray whose line the facet's ends straddle
+    // (reliefPathStraightCrossing)
+    bvec4 side = reliefPathRegionSides(lineX, lineY, lineZ, point);
+    vec3 facet = cross(vec3(previous.x, previous.y, 1.0f), vec3(point.x, point.y, 1.0f));
+    float rate = dot(facet, sweep.h1);
+    vec4 t = -(facet.x * h0x + facet.y * h0y + facet.z * h0z) / (rate != 0.0f ? rate : 1.0f);
+    vec4 along = vec4(sweep.along0, sweep.along0, sweep.along0, sweep.along0) + t * sweep.along1;
+    vec4 kept = vec4(notEqual(side, previousSide)) * vec4(lessThan(t, first)) *
+      vec4(greaterThanEqual(along, none)) * vec4(lessThanEqual(along, element.span + none)) *
+      vec4(greaterThan(h0z + t * sweep.h1.z, none)) *
+      (cut ? vec4(greaterThan(t, baseT + 1e-6f)) :
+             vec4(greaterThan(t, none - 1e-6f)) * vec4(lessThan(t, baseT)));
+    bvec4 keep = greaterThan(kept, vec4(0.5f, 0.5f, 0.5f, 0.5f));
+    keep = rate != 0.0f ? keep : bvec4(false, false, false, false);
+    first = mix(first, t, keep);
+    facetX = mix(facetX, vec4(facet.x, facet.x, facet.x, facet.x), keep);
+    facetY = mix(facetY, vec4(facet.y, facet.y, facet.y, facet.y), keep);
+    facetZ = mix(facetZ, vec4(facet.z, facet.z, facet.z, facet.z), keep);
+    previous = point;
+    previousSide = side;
+  }
+  // a cut's ray meets a facet where it reached the base inside the opening (an odd count of
+  // edges right of it) where the element is there at all
+  vec4 inOpening = scaleAtBase > 1e-6f ? mod(openings, vec4(2.0f, 2.0f, 2.0f, 2.0f)) : none;
+  bvec4 onFacet = cut ? greaterThan(inOpening * vec4(lessThan(first, unmet)), vec4(0.5f, 0.5f, 0.5f, 0.5f))
+                      : lessThan(first, unmet);
+  // the facet's normal as reliefPathStraightCrossing gives it, facing back along the ray
+  float slope = sweep.slope;
+  vec4 u = facetX * (element.right.x / element.halfWidth) + facetZ * (slope * element.axis.x);
+  vec4 v = facetX * (element.right.y / element.halfWidth) + facetZ * (slope * element.axis.y);
+  u = mix(none, u, onFacet);
+  v = mix(none, v, onFacet);
+  vec4 depth = mix(vec4(1.0f, 1.0f, 1.0f, 1.0f), facetY, onFacet);
+  vec4 facing = u * ray.direction.x + v * ray.direction.y + depth * ray.direction.z;
+  vec4 flip = mix(vec4(1.0f, 1.0f, 1.0f, 1.0f), vec4(-1.0f, -1.0f, -1.0f, -1.0f),
+    greaterThan(facing, none));
+  regions.normalsU = flip * u;
+  regions.normalsV = flip * v;
+  regions.normalsDepth = flip * depth;
+  regions.materials = mix(vec4(-1.0f, -1.0f, -1.0f, -1.0f),
+    vec4(element.material, element.material, element.material, element.material), onFacet);
+  return regions;
+}
 
 // The share of a sum of two centred boxes, of widths a and b, below s.
 float reliefPathBoxesBelow(float s, float a, float b)
@@ -1120,11 +1239,7 @@ float reliefPathBoxesBelow(float s, float a, float b)
 ReliefPathRegions reliefPathRegions(
   ReliefRay ray, ReliefPathNearest nearest, vec2 alongX, vec2 alongY)
 {
-  ReliefPathRegions regions;
-  regions.count = 0;
-  regions.offsets = vec4(0.0f, 0.0f, 0.0f, 0.0f);
-  regions.weights = vec4(0.0f, 0.0f, 0.0f, 0.0f);
-  regions.right = vec2(0.0f, 0.0f);
+  ReliefPathRegions regions = reliefPathNoRegions();
   if (!(ray.direction.z > 1e-6f) || ray.bend != 0.0f)
   {
     return regions; // the regions' rays are straight
@@ -1262,7 +1377,7 @@ ReliefPathRegions reliefPathRegions(
     below = share;
   }
   regions.count = breakCount + 1;
-  return regions;
+  return reliefPathRegionSurfaces(regions, element, ray, base);
 }
 
 // Self-shadowing (s5.6): the same walk along the light ray, from where it enters the
