@@ -40,6 +40,7 @@ struct Profile
   double Extent = 0.0;       // the most |x|: how far across the feature reaches
   double Top = 0.0;          // the least y: its highest point (negative protrudes)
   double Bottom = 0.0;       // the most y: its deepest
+  bool Centred = false;      // at every depth its inside is one interval centred on x = 0
 };
 
 struct Material
@@ -98,6 +99,49 @@ Profile DefaultProfile()
   return profile;
 }
 
+// Whether the profile, closed from its last point to its first, holds at every depth
+// one interval centred on x = 0, or nothing (even-odd, as the shader reads it), to 1e-9
+// of its size. Between two depths of its points the interval's ends move linearly, so two
+// depths within each such band tell; bands thinner than that are left out (a point at
+// sin(pi) = 1.2e-16 for 0).
+bool IsCentred(const Profile& profile)
+{
+  const double tolerance = 1e-9 * std::max(1.0, std::max(profile.Extent, profile.Bottom - profile.Top));
+  std::vector<double> levels;
+  for (const dvec2& point : profile.Points)
+  {
+    levels.push_back(point.y);
+  }
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end(),
+                 [tolerance](double a, double b) { return b - a <= tolerance; }),
+    levels.end());
+  const size_t n = profile.Points.size();
+  std::vector<double> crossings;
+  for (size_t band = 0; band + 1 < levels.size(); ++band)
+  {
+    for (const double share : { 0.25, 0.75 })
+    {
+      const double y = glm::mix(levels[band], levels[band + 1], share);
+      crossings.clear();
+      for (size_t k = 0; k < n; ++k)
+      {
+        const dvec2& a = profile.Points[(k + n - 1) % n];
+        const dvec2& b = profile.Points[k];
+        if ((a.y > y) != (b.y > y))
+        {
+          crossings.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+        }
+      }
+      if (crossings.size() != 2 || std::abs(crossings[0] + crossings[1]) > tolerance)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 void MeasureProfile(Profile& profile)
 {
   profile.Extent = 0.0;
@@ -109,6 +153,7 @@ void MeasureProfile(Profile& profile)
     profile.Top = std::min(profile.Top, point.y);
     profile.Bottom = std::max(profile.Bottom, point.y);
   }
+  profile.Centred = IsCentred(profile);
 }
 
 dvec2 QuadraticAt(const Segment& segment, double s)
@@ -526,6 +571,31 @@ double ScaleAt(const Path& path, double arc)
                            : path.ScaleStart;
 }
 
+// Where a path turns (not exactly straight on), the shader revolves the profile about the
+// joint beyond the previous element's end and before the next one's start; one of the two
+// holds all the other does where the profile is centred (then, within the revolved
+// profile's reach of the joint, an element's straight part holds at the same depth all
+// its revolved end holds), does not both cut and add, keeps one scale along its path, and
+// the element whose end stays revolved runs on at least that reach from the joint: that
+// one alone is revolved (the other ends at the plane across the joint, as at an exact
+// join), so that rays pass one revolved end there, not two. 1: the previous element's end
+// is not revolved; 2: the next one's start; 0: both are.
+int RevolvedOnce(
+  const Element& previous, const Element& next, const Path& path, const Profile& profile)
+{
+  if (!profile.Centred || (profile.Top < 0.0 && profile.Bottom > 0.0) ||
+    path.ScaleStart != path.ScaleEnd)
+  {
+    return 0;
+  }
+  const double reach = path.HalfWidth * profile.Extent * path.ScaleStart;
+  if (glm::length(previous.End - previous.Start) >= reach)
+  {
+    return 2;
+  }
+  return glm::length(next.End - next.Start) >= reach ? 1 : 0;
+}
+
 // How far from its centre line an element's feature reaches, in tiles.
 double ElementRadius(const Element& element, const Path& path, const Profile& profile)
 {
@@ -734,7 +804,8 @@ std::vector<int> vtkPathFeatureTextureFilter::ListCells(std::vector<int>& offset
 
 std::vector<int> vtkPathFeatureTextureFilter::Joins() const
 {
-  const std::vector<Element>& elements = this->Internal->Elements;
+  const Internals& internal = *this->Internal;
+  const std::vector<Element>& elements = internal.Elements;
   const double smooth = std::cos(SmoothJointDegrees * M_PI / 180.0);
   const double exact = std::cos(ExactJointRadians);
   std::vector<int> joins(elements.size(), 0);
@@ -742,12 +813,23 @@ std::vector<int> vtkPathFeatureTextureFilter::Joins() const
   {
     const Element& previous = elements[e - 1];
     const Element& element = elements[e];
+    if (previous.Path != element.Path)
+    {
+      continue;
+    }
     const double turn = glm::dot(glm::normalize(previous.End - previous.Start),
       glm::normalize(element.End - element.Start));
-    if (previous.Path == element.Path && turn >= smooth)
+    if (turn >= smooth)
     {
       joins[e - 1] |= turn >= exact ? 2 + 8 : 2;
       joins[e] |= turn >= exact ? 1 + 4 : 1;
+    }
+    if (turn < exact)
+    {
+      const Path& path = internal.Paths[element.Path];
+      const int once = RevolvedOnce(previous, element, path, internal.Profiles[path.Profile]);
+      joins[e - 1] |= once == 1 ? 8 : 0;
+      joins[e] |= once == 2 ? 4 : 0;
     }
   }
   return joins;

@@ -53,7 +53,10 @@
  * - an element, a straight piece of a path: (start, end), (path texel, arc length along
  *   the path at its start, at its end, joins: 1 where the path's previous element goes
  *   on from its start, + 2 where the next goes on from its end, SmoothJointDegrees;
- *   + 4 and + 8 where they go on exactly, ExactJointRadians);
+ *   + 4 and + 8 where its start, its end is not revolved: its neighbour goes on exactly
+ *   (ExactJointRadians), or, where the path turns, the neighbour's revolved end holds all
+ *   it would (a profile that holds one interval centred on x = 0 at every depth, that cuts
+ *   or adds but not both, on a path of one scale: then only one of the two is revolved);
  *   a quadratic segment is stored as pieces whose chords stray at most 1/50 of the
  *   feature's half width from the curve;
  * - a cell's list: element texels, four per texel, -1 past the end.

@@ -171,15 +171,18 @@ TEST(PathFeatureTextureFilter, CurvesBecomePiecesWithinTolerance)
       nearest = std::min(nearest, glm::length(curve - middle));
     }
     EXPECT_LE(nearest, 0.02 * halfWidth + 1e-6) << "element " << e;
-    // the pieces go on smoothly, not exactly (region sampling goes on through them, the
-    // shader revolves their ends): 1 to the previous, 2 to the next
+    // the pieces go on smoothly, not exactly (region sampling goes on through them): 1 to
+    // the previous, 2 to the next; the shader revolves each end where the path turns, and
+    // the default groove is centred, so a piece's start is not (+ 4): the previous one's
+    // revolved end holds all of it
     const float joins = run.Textures.Texel(first + 3 + 2 * static_cast<int>(e)).w;
-    EXPECT_EQ(joins, (e > 0 ? 1.0f : 0.0f) + (e + 1 < elements ? 2.0f : 0.0f)) << e;
+    EXPECT_EQ(joins, (e > 0 ? 1.0f + 4.0f : 0.0f) + (e + 1 < elements ? 2.0f : 0.0f)) << e;
   }
 }
 
 // A corner that turns by more than SmoothJointDegrees joins nothing: region sampling
-// stops at it; by less, the two segments go on (not exactly).
+// stops at it; by less, the two segments go on (not exactly). Either way the second
+// segment's start is not revolved (+ 4, RevolvedOnceAtJoints).
 TEST(PathFeatureTextureFilter, CornersJoinNothing)
 {
   for (const double degrees : { 20.0, 10.0 })
@@ -200,7 +203,57 @@ TEST(PathFeatureTextureFilter, CornersJoinNothing)
     const int first = 1 + 6; // after the header, the default profile and the path
     const bool smooth = degrees <= vtkPathFeatureTextureFilter::SmoothJointDegrees;
     EXPECT_EQ(run.Textures.Texel(first + 3).w, smooth ? 2.0f : 0.0f) << degrees;
-    EXPECT_EQ(run.Textures.Texel(first + 5).w, smooth ? 1.0f : 0.0f) << degrees;
+    EXPECT_EQ(run.Textures.Texel(first + 5).w, smooth ? 1.0f + 4.0f : 4.0f) << degrees;
+  }
+}
+
+// Where a path turns, the shader revolves the profile beyond the first element's end and
+// before the second's start; where the profile is centred (at every depth one interval
+// about x = 0), adds or cuts but not both, and keeps one scale, the first's revolved end
+// holds all the second's does (its straight part holds the rest), so the second's start
+// is not revolved (+ 4 in its joins); the first's end instead (+ 8) where the first is
+// shorter than the profile's reach; both elsewhere (ReliefPathSearch.CornersRevolveOnce
+// checks the surfaces against the marched reference).
+TEST(PathFeatureTextureFilter, RevolvedOnceAtJoints)
+{
+  const std::vector<dvec2> vee = { { -1.0, 0.0 }, { 0.0, 1.0 }, { 1.0, 0.0 } };
+  const std::vector<dvec2> ridge = { { -1.0, 0.0 }, { 0.0, -0.5 }, { 1.0, 0.0 } };
+  const std::vector<dvec2> dovetail = { { -0.5, 0.0 }, { -1.0, 0.6 }, { 1.0, 0.6 }, { 0.5, 0.0 } };
+  const std::vector<dvec2> notches = { { -1.0, 0.0 }, { -0.6, 0.5 }, { -0.2, 0.0 }, { 0.2, 0.0 },
+    { 0.6, 0.5 }, { 1.0, 0.0 } };
+  const std::vector<dvec2> slanted = { { -1.0, 0.0 }, { 0.5, 1.0 }, { 1.0, 0.0 } };
+  const std::vector<dvec2> rimmed = { { -1.0, 0.0 }, { -0.7, -0.2 }, { -0.4, 0.0 }, { 0.0, 0.8 },
+    { 0.4, 0.0 }, { 0.7, -0.2 }, { 1.0, 0.0 } };
+  struct Case
+  {
+    std::vector<dvec2> Profile;
+    dvec2 First; // the first segment's start (the corner is at (0.3, 0.5))
+    double ScaleEnd;
+    float Start; // the second element's start bit, and the first's end bit
+    float End;
+    const char* What;
+  };
+  const std::vector<Case> cases = { { vee, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, "a vee" },
+    { ridge, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, "a ridge" },
+    { vee, { 0.299, 0.5 }, 1.0, 0.0f, 8.0f, "a vee after a short element" },
+    { dovetail, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, "a dovetail (wider below, centred)" },
+    { notches, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, "two notches (two intervals)" },
+    { slanted, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, "an off-centre vee" },
+    { rimmed, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, "a cut with rims (cuts and adds)" },
+    { vee, { 0.1, 0.5 }, 0.5, 0.0f, 0.0f, "a narrowing vee" } };
+  for (const Case& c : cases)
+  {
+    Scene scene;
+    scene.Profiles = { c.Profile };
+    PathSpec path{ { c.First, { 0.3, 0.5 }, { 0.3, 0.7 } }, 0.02, 0 };
+    path.ScaleEnd = c.ScaleEnd;
+    scene.Paths.push_back(path);
+    FilterRun run(PathsData(scene.Paths), 0, ProfilesData(scene.Profiles));
+    ASSERT_EQ(run.Filter->GetNumberOfElements(), 2) << c.What;
+    // after the header, the profile (1 + its pairs of points) and the path (2)
+    const int first = 1 + 1 + static_cast<int>(c.Profile.size() + 1) / 2 + 2;
+    EXPECT_EQ(run.Textures.Texel(first + 1).w, c.End) << c.What;
+    EXPECT_EQ(run.Textures.Texel(first + 3).w, c.Start) << c.What;
   }
 }
 

@@ -70,9 +70,11 @@ struct Agreement
 
 // `count` random rays up to 80 degrees from the normal (`seed`) through `search`, against
 // the marched reference down to tEnd; a ray that neither agrees nor stops on a sliver
-// fails the test, `what` naming the case.
+// fails the test, `what` naming the case. The rays enter anywhere on the tile, or within
+// `spread` of the points `around`, in turn.
 Agreement AgreeWithTheReference(Search search, const Reference& reference, double tEnd,
-  double base, int count, unsigned seed, const std::string& what)
+  double base, int count, unsigned seed, const std::string& what,
+  const std::vector<vec2>& around = {}, float spread = 0.0f)
 {
   std::mt19937 random(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -81,7 +83,11 @@ Agreement AgreeWithTheReference(Search search, const Reference& reference, doubl
   {
     const float angle = 6.2831853f * unit(random);
     const float run = 0.3f * unit(random);
-    const vec2 uv(unit(random), unit(random));
+    vec2 uv(unit(random), unit(random));
+    if (!around.empty())
+    {
+      uv = around[k % around.size()] + spread * (2.0f * uv - vec2(1.0f, 1.0f));
+    }
     const ReliefRay ray = Ray(uv, vec3(run * std::cos(angle), run * std::sin(angle), 1.0f));
     const ReliefHit hit = search(ray, 0, 0);
     const glm::dvec3 origin(ray.origin);
@@ -292,6 +298,46 @@ TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
     EXPECT_GE(agreement.Agreeing, agreement.Rays * 99 / 100)
       << agreement.Slivers << " slivers, grid " << resolution;
   }
+}
+
+// Where a path turns, one element's revolved end is left out where the other's holds all
+// of it (vtkPathFeatureTextureFilter: a centred profile that cuts or adds, one scale):
+// the walk still meets the surfaces the reference defines with both ends revolved, at
+// corners of 20 to 160 degrees, for centred profiles (a vee, a dovetail that overhangs, a
+// ridge) and for those that keep both ends (two notches, an off-centre vee, a narrowing
+// vee), and after an element shorter than the profile's reach.
+TEST(ReliefPathSearch, CornersRevolveOnce)
+{
+  Scene scene;
+  scene.Profiles = { VGroove, Dovetail, Ridge,
+    { { -1.0, 0.0 }, { -0.6, 0.5 }, { -0.2, 0.0 }, { 0.2, 0.0 }, { 0.6, 0.5 }, { 1.0, 0.0 } },
+    { { -1.0, 0.0 }, { 0.5, 1.0 }, { 1.0, 0.0 } } };
+  std::vector<vec2> corners;
+  for (int profile = 0; profile < 6; ++profile)
+  {
+    // a zigzag along u, its corners turning by 20 to 160 degrees
+    PathSpec path{ {}, 0.06, profile % 5 };
+    const double v = 0.08 + 0.16 * profile;
+    path.Points.push_back({ 0.05, v });
+    double u = 0.05;
+    for (int k = 0; k < 4; ++k)
+    {
+      const double half = (20.0 + 40.0 * k) * M_PI / 360.0; // half the turn
+      u += 0.05 + 0.04 * std::sin(half);
+      path.Points.push_back({ u, v + (k % 2 == 0 ? 0.04 : -0.04) * std::cos(half) });
+      corners.emplace_back(static_cast<float>(u), static_cast<float>(path.Points.back().y));
+    }
+    path.Points.push_back({ u + 0.001, path.Points.back().y + 0.001 }); // shorter than its reach
+    path.Points.push_back({ u + 0.1, path.Points.back().y });
+    corners.emplace_back(static_cast<float>(u + 0.001), static_cast<float>(path.Points.back().y));
+    path.ScaleEnd = profile == 5 ? 0.5 : 1.0; // the sixth: a narrowing vee
+    scene.Paths.push_back(path);
+  }
+  Built built(scene);
+  Reference reference(scene, built.Base);
+  const Agreement agreement = AgreeWithTheReference(&reliefSearchPathFeatures, reference,
+    built.Deepest, built.Base, 1200, 23, "corners", corners, 0.05f);
+  EXPECT_GE(agreement.Agreeing, agreement.Rays * 99 / 100) << agreement.Slivers << " slivers";
 }
 
 // Below a curved surface's quadric (the quadric frame, vtkOpenGLQuadricPathFeatureMapper)

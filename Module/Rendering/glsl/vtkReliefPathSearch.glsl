@@ -15,7 +15,9 @@
 // split segment, ExactJointRadians) the element ends at the plane across its end
 // instead, its neighbour's straight part going on: that is the sweep (a profile whose
 // inside does not reach its middle at some depth would bulge there, revolved), and a ray
-// that passes the joint meets no revolved facet. Each profile facet, with the
+// that passes the joint meets no revolved facet. So it does where the path turns and one
+// of the two revolved ends holds all the other does (the filter's RevolvedOnce: a centred
+// profile, one scale): only that one is revolved. Each profile facet, with the
 // perturbation's linear scale, is met by a straight ray where a linear function of t
 // vanishes (s5.2), each revolved facet where a quadratic does.
 //
@@ -48,7 +50,7 @@ struct ReliefPathNearest
   float gap;
   int element; // its data texel; -1 where none
   int joins;   // 1: its path's previous element goes on from its start, 2: the next from its end
-               // (+ 4, + 8: exactly, vtkPathFeatureTextureFilter::ExactJointRadians)
+               // (+ 4, + 8: its start, its end is not revolved: vtkPathFeatureTextureFilter)
   vec2 near;   // where the ray passed it (the copy of the tile it is in)
   float second; // the least gap of the other elements
 };
@@ -127,7 +129,7 @@ struct ReliefPathElement
   float priority;
   int joins;       // ReliefPathNearest's
   int rounded;     // 1: the profile is revolved about its start, 2: about its end (not
-                   // where its path goes on exactly; at both ends of an element alone)
+                   // where joins says so; at both ends of an element alone)
 };
 
 // Whether the element's profile both cuts below the base and adds above it.
