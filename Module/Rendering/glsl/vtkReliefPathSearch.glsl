@@ -711,6 +711,10 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   // count from there (no walls up from a cut's opening, none of the base plane)
   float tEvents = top >= base && ray.direction.z > 0.0f ? tToBase : tFrom;
   tBase = tBase > tEvents + 1e-6f && tBase < tTo ? tBase : tTo;
+  // no element reaches above the cell's top: a ray that descends meets them, and the
+  // footprint's rays beside it (at the same depths) come near them, only from there
+  float tBelowTop = ray.direction.z > 0.0f
+    ? clamp((top - ray.origin.z) / ray.direction.z, tFrom, tTo) : tFrom;
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
   {
     int texel = reliefPathListed(list, k);
@@ -720,10 +724,10 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     next[k] = tTo;
     nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
     kind[k] = -1;
-    float gap = reliefPathGap(element, ray, tFrom, tTo);
+    float gap = reliefPathGap(element, ray, tBelowTop, tTo);
     result.nearest = reliefPathNearer(result.nearest, gap, texel, element.joins, near);
-    nearestToBase = reliefPathNearer(
-      nearestToBase, reliefPathGap(element, ray, tFrom, tToBase), texel, element.joins, near);
+    nearestToBase = reliefPathNearer(nearestToBase,
+      reliefPathGap(element, ray, tBelowTop, max(tToBase, tBelowTop)), texel, element.joins, near);
     if (gap <= 0.0f)
     {
       ReliefPathEvent first;
@@ -1044,10 +1048,11 @@ float reliefPathPixelReach(vec2 alongX, vec2 alongY)
 }
 
 // Whether no feature but the nearest element and those its path goes on into comes
-// within `reach` (the pixel's) of the view ray from t0 to t1: the stretch where the
-// pixel's rays fall into that element and run on below the view ray's hit, which
-// `nearest` did not judge. The features are those the cells there list (each extended by
-// its reach); where that stretch passes more than 16 cells, false.
+// within `reach` (the pixel's) of the view ray from t0 to t1 (in each cell, below the
+// cell's top: none reaches above it): the stretch where the pixel's rays fall into that
+// element and run on below the view ray's hit, which `nearest` did not judge. The
+// features are those the cells there list (each extended by its reach); where that
+// stretch passes more than 16 cells, false.
 bool reliefPathAloneThere(ReliefPathNearest nearest, ReliefRay ray, float t0, float t1, float reach)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
@@ -1067,12 +1072,13 @@ bool reliefPathAloneThere(ReliefPathNearest nearest, ReliefRay ray, float t0, fl
     vec2 cell = first + vec2(float(c % across), float(c / across));
     vec4 cellTexel = RELIEF_PATH_CELL(cell);
     vec2 centre = vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
-    int count = min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY);
+    float from = max(t0, (cellTexel.z - ray.origin.z) / ray.direction.z);
+    int count = from <= t1 ? min(int(cellTexel.y), RELIEF_PATH_CELL_CAPACITY) : 0;
     for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
     {
       int texel = reliefPathListed(int(cellTexel.x), k);
       if (!reliefPathSameFeature(nearest, texel) &&
-        reliefPathGap(reliefPathElement(texel, centre), ray, t0, t1) <= reach)
+        reliefPathGap(reliefPathElement(texel, centre), ray, from, t1) <= reach)
       {
         return false;
       }
@@ -1262,10 +1268,12 @@ ReliefPathRegions reliefPathRegions(
   float widthY = abs(dot(alongY, element.right));
   float halfAcross = 0.5f * (widthX + widthY);
   float halfAlong = 0.5f * (abs(dot(alongX, element.axis)) + abs(dot(alongY, element.axis)));
-  // beside the straight part wherever the rays come within reach, from depth 0 down
+  // beside the straight part wherever the rays come within reach, from the element's
+  // highest point down
   float largest = max(element.scaleStart, element.scaleEnd);
   float reach = element.halfWidth * element.extent * largest + halfAcross;
-  float top = ray.origin.z;
+  float top = max(ray.origin.z,
+    base + min(element.top * element.scaleStart, element.top * element.scaleEnd));
   float bottom = base + max(element.bottom, 0.0f) * largest;
   if (abs(slantAcross) > 1e-9f)
   {
