@@ -713,6 +713,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   tBase = tBase > tEvents + 1e-6f && tBase < tTo ? tBase : tTo;
   // no element reaches above the cell's top: a ray that descends meets them, and the
   // footprint's rays beside it (at the same depths) come near them, only from there
+  int mixing = 0; // count where a listed element's profile both cuts and adds, else 0
   float tBelowTop = ray.direction.z > 0.0f
     ? clamp((top - ray.origin.z) / ray.direction.z, tFrom, tTo) : tFrom;
   for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
@@ -721,6 +722,7 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
     ReliefPathElement element = reliefPathListedElement(list, texel, near);
     priority[k] = element.priority;
     mixes[k] = reliefPathMixes(element);
+    mixing = mixes[k] ? count : mixing;
     next[k] = tTo;
     nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
     kind[k] = -1;
@@ -786,40 +788,37 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       return result;
     }
     t = tNext;
-    if (j < 0)
+    // what changes there: the crossed element's next crossing and state, or at the base
+    // plane the state of every element in reach whose profile both cuts and adds (a cut's
+    // state is the same on both sides of its opening; an addition ends on the base where
+    // one of its facets lies, whose crossing tells its state), in one loop of one
+    // element's update (on llvmpipe each loop costs at least a pass of its code)
+    bool atBase = j < 0;
+    normal = atBase ? vec3(0.0f, 0.0f, 1.0f) : nextNormal[max(j, 0)];
+    material = -1.0f;
+    tBase = atBase ? tTo : tBase;
+    int updates = atBase ? mixing : 1;
+    for (int m = 0; m < RELIEF_PATH_CELL_CAPACITY && m < updates; ++m)
     {
-      // the base plane: the state on from here of every element whose profile both cuts
-      // and adds (a cut's state is the same on both sides of its opening; an addition
-      // ends on the base where one of its facets lies, whose crossing tells its state)
-      normal = vec3(0.0f, 0.0f, 1.0f);
-      material = -1.0f;
-      tBase = tTo;
-      for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
+      int k = atBase ? m : j;
+      if (!atBase || (kind[k] >= 0 && mixes[k]))
       {
-        if (kind[k] >= 0 && mixes[k])
+        ReliefPathElement element = reliefPathListedElement(list, reliefPathListed(list, k), near);
+        material = atBase ? material : element.material;
+        ReliefPathEvent following;
+        following.t = atBase ? next[k] : tTo;
+        following.normal = nextNormal[k];
+        following.material = -1.0f;
+        if (!atBase)
         {
-          ReliefPathElement element =
-            reliefPathListedElement(list, reliefPathListed(list, k), near);
-          kind[k] = reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + next[k])), base);
-          result.samples += 1;
+          following = reliefPathElementEvents(following, element, ray, base, t + 1e-6f);
         }
+        next[k] = following.t;
+        nextNormal[k] = following.normal;
+        kind[k] = reliefPathElementClass(
+          element, reliefRayAt(ray, 0.5f * (t + min(following.t, tBase))), base);
+        result.samples += 1;
       }
-    }
-    else
-    {
-      ReliefPathElement element = reliefPathListedElement(list, reliefPathListed(list, j), near);
-      normal = nextNormal[j];
-      material = element.material;
-      ReliefPathEvent following;
-      following.t = tTo;
-      following.normal = vec3(0.0f, 0.0f, 1.0f);
-      following.material = -1.0f;
-      following = reliefPathElementEvents(following, element, ray, base, t + 1e-6f);
-      next[j] = following.t;
-      nextNormal[j] = following.normal;
-      kind[j] =
-        reliefPathElementClass(element, reliefRayAt(ray, 0.5f * (t + min(following.t, tBase))), base);
-      result.samples += 1;
     }
   }
   return result;
