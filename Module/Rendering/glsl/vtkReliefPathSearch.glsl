@@ -711,46 +711,69 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   // count from there (no walls up from a cut's opening, none of the base plane)
   float tEvents = top >= base && ray.direction.z > 0.0f ? tToBase : tFrom;
   tBase = tBase > tEvents + 1e-6f && tBase < tTo ? tBase : tTo;
+  int mixing = 0; // count where a listed element's profile both cuts and adds, else 0
   // no element reaches above the cell's top: a ray that descends meets them, and the
   // footprint's rays beside it (at the same depths) come near them, only from there
-  int mixing = 0; // count where a listed element's profile both cuts and adds, else 0
   float tBelowTop = ray.direction.z > 0.0f
     ? clamp((top - ray.origin.z) / ray.direction.z, tFrom, tTo) : tFrom;
-  for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
-  {
-    int texel = reliefPathListed(list, k);
-    ReliefPathElement element = reliefPathListedElement(list, texel, near);
-    priority[k] = element.priority;
-    mixes[k] = reliefPathMixes(element);
-    mixing = mixes[k] ? count : mixing;
-    next[k] = tTo;
-    nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
-    kind[k] = -1;
-    float gap = reliefPathGap(element, ray, tBelowTop, tTo);
-    result.nearest = reliefPathNearer(result.nearest, gap, texel, element.joins, near);
-    nearestToBase = reliefPathNearer(nearestToBase,
-      reliefPathGap(element, ray, tBelowTop, max(tToBase, tBelowTop)), texel, element.joins, near);
-    if (gap <= 0.0f)
-    {
-      ReliefPathEvent first;
-      first.t = tTo;
-      first.normal = vec3(0.0f, 0.0f, 1.0f);
-      first.material = -1.0f;
-      first = reliefPathElementEvents(first, element, ray, base, tEvents + 1e-6f);
-      next[k] = first.t;
-      nextNormal[k] = first.normal;
-      kind[k] = reliefPathElementClass(
-        element, reliefRayAt(ray, 0.5f * (tEvents + min(first.t, tBase))), base);
-    }
-  }
   float t = tEvents;
   vec3 normal = vec3(0.0f, 0.0f, 1.0f);
   float material = -1.0f;
-  for (int e = 0; e < RELIEF_PATH_EVENTS; ++e)
+  bool atBase = false;
+  int j = -1;
+  for (int e = 0; e <= RELIEF_PATH_EVENTS; ++e)
   {
+    // the elements' updates, in one loop of one element's update (on llvmpipe each block
+    // of code costs a pass whether any fragment needs it or not): first every listed
+    // element's reach, and where the ray comes within it, its first crossing and its state;
+    // after a crossing, the crossed element's next crossing and state, or at the base
+    // plane the state of every element in reach whose profile both cuts and adds (a cut's
+    // state is the same on both sides of its opening; an addition ends on the base where
+    // one of its facets lies, whose crossing tells its state)
+    bool starting = e == 0;
+    int updates = starting ? count : (atBase ? mixing : 1);
+    for (int m = 0; m < RELIEF_PATH_CELL_CAPACITY && m < updates; ++m)
+    {
+      int k = starting || atBase ? m : j;
+      int texel = reliefPathListed(list, k);
+      ReliefPathElement element = reliefPathListedElement(list, texel, near);
+      bool update = starting || !atBase || (kind[k] >= 0 && mixes[k]);
+      if (starting)
+      {
+        priority[k] = element.priority;
+        mixes[k] = reliefPathMixes(element);
+        mixing = mixes[k] ? count : mixing;
+        next[k] = tTo;
+        nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
+        kind[k] = -1;
+        float gap = reliefPathGap(element, ray, tBelowTop, tTo);
+        result.nearest = reliefPathNearer(result.nearest, gap, texel, element.joins, near);
+        nearestToBase = reliefPathNearer(nearestToBase,
+          reliefPathGap(element, ray, tBelowTop, max(tToBase, tBelowTop)), texel, element.joins,
+          near);
+        update = gap <= 0.0f;
+      }
+      if (update)
+      {
+        material = starting || atBase ? material : element.material;
+        ReliefPathEvent following;
+        following.t = atBase ? next[k] : tTo;
+        following.normal = nextNormal[k];
+        following.material = -1.0f;
+        if (!atBase)
+        {
+          following = reliefPathElementEvents(following, element, ray, base, t + 1e-6f);
+        }
+        next[k] = following.t;
+        nextNormal[k] = following.normal;
+        kind[k] = reliefPathElementClass(
+          element, reliefRayAt(ray, 0.5f * (t + min(following.t, tBase))), base);
+        result.samples += starting ? 0 : 1;
+      }
+    }
     // the next crossing: the base (j = -1) or an element's
     float tNext = tBase;
-    int j = -1;
+    j = -1;
     for (int k = 0; k < RELIEF_PATH_CELL_CAPACITY && k < count; ++k)
     {
       j = next[k] < tNext ? k : j;
@@ -788,38 +811,10 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
       return result;
     }
     t = tNext;
-    // what changes there: the crossed element's next crossing and state, or at the base
-    // plane the state of every element in reach whose profile both cuts and adds (a cut's
-    // state is the same on both sides of its opening; an addition ends on the base where
-    // one of its facets lies, whose crossing tells its state), in one loop of one
-    // element's update (on llvmpipe each loop costs at least a pass of its code)
-    bool atBase = j < 0;
+    atBase = j < 0;
     normal = atBase ? vec3(0.0f, 0.0f, 1.0f) : nextNormal[max(j, 0)];
     material = -1.0f;
     tBase = atBase ? tTo : tBase;
-    int updates = atBase ? mixing : 1;
-    for (int m = 0; m < RELIEF_PATH_CELL_CAPACITY && m < updates; ++m)
-    {
-      int k = atBase ? m : j;
-      if (!atBase || (kind[k] >= 0 && mixes[k]))
-      {
-        ReliefPathElement element = reliefPathListedElement(list, reliefPathListed(list, k), near);
-        material = atBase ? material : element.material;
-        ReliefPathEvent following;
-        following.t = atBase ? next[k] : tTo;
-        following.normal = nextNormal[k];
-        following.material = -1.0f;
-        if (!atBase)
-        {
-          following = reliefPathElementEvents(following, element, ray, base, t + 1e-6f);
-        }
-        next[k] = following.t;
-        nextNormal[k] = following.normal;
-        kind[k] = reliefPathElementClass(
-          element, reliefRayAt(ray, 0.5f * (t + min(following.t, tBase))), base);
-        result.samples += 1;
-      }
-    }
   }
   return result;
 }
