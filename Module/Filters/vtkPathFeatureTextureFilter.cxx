@@ -106,7 +106,8 @@ Profile DefaultProfile()
 // sin(pi) = 1.2e-16 for 0).
 bool IsCentred(const Profile& profile)
 {
-  const double tolerance = 1e-9 * std::max(1.0, std::max(profile.Extent, profile.Bottom - profile.Top));
+  const double tolerance =
+    1e-9 * std::max({ 1.0, profile.Extent, profile.Bottom - profile.Top });
   std::vector<double> levels;
   for (const dvec2& point : profile.Points)
   {
@@ -982,7 +983,8 @@ void vtkPathFeatureTextureFilter::WriteTextures(const std::vector<int>& offsets,
     const Path& path = internal.Paths[p];
     write(pathTexels[p], path.HalfWidth, profileTexels[path.Profile],
       path.Material >= 0 ? materialTexels[path.Material] : -1.0, path.Priority);
-    write(pathTexels[p] + 1, path.ScaleStart, path.ScaleEnd, path.Length, 0);
+    write(pathTexels[p] + 1, path.ScaleStart, path.ScaleEnd, path.Length,
+      internal.Profiles[path.Profile].Centred ? 0 : 1);
   }
   const std::vector<int> joins = this->Joins();
   for (size_t e = 0; e < internal.Elements.size(); ++e)

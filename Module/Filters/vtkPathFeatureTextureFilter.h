@@ -49,7 +49,9 @@
  *   two per texel (x0, y0, x1, y1);
  * - a material: (r, g, b, specular), (specular power, 0, 0, 0);
  * - a path: (half width, profile texel, material texel or -1, priority),
- *   (scale at start, scale at end, length, 0);
+ *   (scale at start, scale at end, length, 1 where the profile is not centred: at some
+ *   depth it holds other than one interval centred on x = 0, so that its revolved ends
+ *   change across the plane through the element's axis; else 0);
  * - an element, a straight piece of a path: (start, end), (path texel, arc length along
  *   the path at its start, at its end, joins: 1 where the path's previous element goes
  *   on from its start, + 2 where the next goes on from its end, SmoothJointDegrees;

@@ -116,6 +116,7 @@ TEST(PathFeatureTextureFilter, DataTexelsHoldPathsProfilesAndMaterials)
   EXPECT_EQ(textures.Texel(6), glm::vec4(0.05f, 1, 4, 3));
   EXPECT_NEAR(textures.Texel(7).y, 0.5f, 1e-7f);
   EXPECT_NEAR(textures.Texel(7).z, 0.8f, 1e-6f);
+  EXPECT_EQ(textures.Texel(7).w, 0.0f); // the profile is centred
   // 0.8 long: four elements of at most a quarter tile, end to end
   EXPECT_EQ(filter->GetNumberOfElements(), 4);
   for (int e = 0; e < 4; ++e)
@@ -213,7 +214,8 @@ TEST(PathFeatureTextureFilter, CornersJoinNothing)
 // holds all the second's does (its straight part holds the rest), so the second's start
 // is not revolved (+ 4 in its joins); the first's end instead (+ 8) where the first is
 // shorter than the profile's reach; both elsewhere (ReliefPathSearch.CornersRevolveOnce
-// checks the surfaces against the marched reference).
+// checks the surfaces against the marched reference). A path whose profile is not centred
+// is flagged: beyond its revolved ends the shader meets the plane where their halves meet.
 TEST(PathFeatureTextureFilter, RevolvedOnceAtJoints)
 {
   const std::vector<dvec2> vee = { { -1.0, 0.0 }, { 0.0, 1.0 }, { 1.0, 0.0 } };
@@ -231,16 +233,17 @@ TEST(PathFeatureTextureFilter, RevolvedOnceAtJoints)
     double ScaleEnd;
     float Start; // the second element's start bit, and the first's end bit
     float End;
+    float OffCentre; // the path's flag (its second texel's fourth value)
     const char* What;
   };
-  const std::vector<Case> cases = { { vee, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, "a vee" },
-    { ridge, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, "a ridge" },
-    { vee, { 0.299, 0.5 }, 1.0, 0.0f, 8.0f, "a vee after a short element" },
-    { dovetail, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, "a dovetail (wider below, centred)" },
-    { notches, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, "two notches (two intervals)" },
-    { slanted, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, "an off-centre vee" },
-    { rimmed, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, "a cut with rims (cuts and adds)" },
-    { vee, { 0.1, 0.5 }, 0.5, 0.0f, 0.0f, "a narrowing vee" } };
+  const std::vector<Case> cases = { { vee, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, 0.0f, "a vee" },
+    { ridge, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, 0.0f, "a ridge" },
+    { vee, { 0.299, 0.5 }, 1.0, 0.0f, 8.0f, 0.0f, "a vee after a short element" },
+    { dovetail, { 0.1, 0.5 }, 1.0, 4.0f, 0.0f, 0.0f, "a dovetail (wider below, centred)" },
+    { notches, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 1.0f, "two notches (two intervals)" },
+    { slanted, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 1.0f, "an off-centre vee" },
+    { rimmed, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 1.0f, "a cut with rims (two intervals above)" },
+    { vee, { 0.1, 0.5 }, 0.5, 0.0f, 0.0f, 0.0f, "a narrowing vee" } };
   for (const Case& c : cases)
   {
     Scene scene;
@@ -252,6 +255,7 @@ TEST(PathFeatureTextureFilter, RevolvedOnceAtJoints)
     ASSERT_EQ(run.Filter->GetNumberOfElements(), 2) << c.What;
     // after the header, the profile (1 + its pairs of points) and the path (2)
     const int first = 1 + 1 + static_cast<int>(c.Profile.size() + 1) / 2 + 2;
+    EXPECT_EQ(run.Textures.Texel(first - 1).w, c.OffCentre) << c.What;
     EXPECT_EQ(run.Textures.Texel(first + 1).w, c.End) << c.What;
     EXPECT_EQ(run.Textures.Texel(first + 3).w, c.Start) << c.What;
   }

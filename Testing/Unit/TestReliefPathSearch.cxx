@@ -304,8 +304,11 @@ TEST(ReliefPathSearch, AgreesWithTheMarchedReference)
 // of it (vtkPathFeatureTextureFilter: a centred profile that cuts or adds, one scale):
 // the walk still meets the surfaces the reference defines with both ends revolved, at
 // corners of 20 to 160 degrees, for centred profiles (a vee, a dovetail that overhangs, a
-// ridge) and for those that keep both ends (two notches, an off-centre vee, a narrowing
-// vee), and after an element shorter than the profile's reach.
+// ridge) and for those that keep both ends (two notches, an off-centre vee; a vee and an
+// off-centre vee that narrow), and after an element shorter than the profile's reach.
+// (Beyond an end, an off-centre profile's two halves meet on the plane through the
+// element's axis: the walk's state changes there; without that crossing a narrowing
+// off-centre vee's ray went through.)
 TEST(ReliefPathSearch, CornersRevolveOnce)
 {
   Scene scene;
@@ -313,11 +316,12 @@ TEST(ReliefPathSearch, CornersRevolveOnce)
     { { -1.0, 0.0 }, { -0.6, 0.5 }, { -0.2, 0.0 }, { 0.2, 0.0 }, { 0.6, 0.5 }, { 1.0, 0.0 } },
     { { -1.0, 0.0 }, { 0.5, 1.0 }, { 1.0, 0.0 } } };
   std::vector<vec2> corners;
-  for (int profile = 0; profile < 6; ++profile)
+  const int profiles[7] = { 0, 1, 2, 3, 4, 0, 4 };
+  for (int row = 0; row < 7; ++row)
   {
     // a zigzag along u, its corners turning by 20 to 160 degrees
-    PathSpec path{ {}, 0.06, profile % 5 };
-    const double v = 0.08 + 0.16 * profile;
+    PathSpec path{ {}, 0.06, profiles[row] };
+    const double v = 0.07 + 0.14 * row;
     path.Points.push_back({ 0.05, v });
     double u = 0.05;
     for (int k = 0; k < 4; ++k)
@@ -330,7 +334,7 @@ TEST(ReliefPathSearch, CornersRevolveOnce)
     path.Points.push_back({ u + 0.001, path.Points.back().y + 0.001 }); // shorter than its reach
     path.Points.push_back({ u + 0.1, path.Points.back().y });
     corners.emplace_back(static_cast<float>(u + 0.001), static_cast<float>(path.Points.back().y));
-    path.ScaleEnd = profile == 5 ? 0.5 : 1.0; // the sixth: a narrowing vee
+    path.ScaleEnd = row >= 5 ? 0.5 : 1.0; // the last two narrow
     scene.Paths.push_back(path);
   }
   Built built(scene);

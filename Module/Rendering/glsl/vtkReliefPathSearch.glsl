@@ -130,6 +130,7 @@ struct ReliefPathElement
   int joins;       // ReliefPathNearest's
   int rounded;     // 1: the profile is revolved about its start, 2: about its end (not
                    // where joins says so; at both ends of an element alone)
+  bool centred;    // the profile holds one interval centred on x = 0 at every depth
 };
 
 // Whether the element's profile both cuts below the base and adds above it.
@@ -170,6 +171,7 @@ ReliefPathElement reliefPathElement(int texel, vec2 near)
   element.priority = path.w;
   element.joins = int(record.w);
   element.rounded = 3 & ~(element.joins >> 2);
+  element.centred = scales.w < 0.5f;
   return element;
 }
 
@@ -649,6 +651,24 @@ ReliefPathEvent reliefPathElementEvents(
     vec3 normal = vec3(element.axis.x, element.axis.y, 0.0f);
     best = reliefPathKeep(best, tStart, after, normal, element.material);
     best = reliefPathKeep(best, tEnd, after, normal, element.material);
+  }
+  // beyond a revolved end, within its reach, the plane through the element's axis, where
+  // the two halves of the revolved profile meet: one that is not centred changes state
+  // there, on no facet
+  if (!element.centred && sweep.h1.x != 0.0f)
+  {
+    float tAxis = -sweep.h0.x / sweep.h1.x;
+    float along = sweep.along0 + tAxis * sweep.along1;
+    bool beyondStart = along < 0.0f && (element.rounded & 1) != 0;
+    bool beyondEnd = along > element.span && (element.rounded & 2) != 0;
+    float past = beyondStart ? -along : along - element.span;
+    float reach = element.halfWidth * element.extent *
+      (beyondStart ? element.scaleStart : element.scaleEnd);
+    if ((beyondStart || beyondEnd) && past <= reach)
+    {
+      best = reliefPathKeep(
+        best, tAxis, after, vec3(element.right.x, element.right.y, 0.0f), element.material);
+    }
   }
   // (no pass where the ray stays below the base)
   int walls = aboveBase ? element.points : 0;
@@ -1131,7 +1151,7 @@ bvec4 reliefPathRegionSides(float lineX, vec4 lineY, vec4 lineZ, vec2 p)
 
 // What the regions' rays meet: each ray, at its region's offset across the element, through
 // the element alone, beside its straight part (where the regions hold) and across a profile
-// that only cuts or only adds (reliefPathMixes refuses the others). A cut's ray that
+// that only cuts or only adds (reliefPathRegions refuses one that does both). A cut's ray that
 // reaches the base within the cut's opening goes on in air to the first facet after it
 // (where it leaves the profile's inside; the facet that closes the profile at the base is
 // passed, as the walk starts a cut's crossings just after the base); an addition's ray
@@ -1200,8 +1220,9 @@ ReliefPathRegions reliefPathRegionSurfaces(
   // a cut's ray meets a facet where it reached the base inside the opening (an odd count of
   // edges right of it) where the element is there at all
   vec4 inOpening = scaleAtBase > 1e-6f ? mod(openings, vec4(2.0f, 2.0f, 2.0f, 2.0f)) : none;
-  bvec4 onFacet = cut ? greaterThan(inOpening * vec4(lessThan(first, unmet)), vec4(0.5f, 0.5f, 0.5f, 0.5f))
-                      : lessThan(first, unmet);
+  bvec4 met = lessThan(first, unmet);
+  bvec4 onFacet =
+    cut ? greaterThan(inOpening * vec4(met), vec4(0.5f, 0.5f, 0.5f, 0.5f)) : met;
   // the facet's normal as reliefPathStraightCrossing gives it, facing back along the ray
   float slope = sweep.slope;
   vec4 u = facetX * (element.right.x / element.halfWidth) + facetZ * (slope * element.axis.x);
