@@ -110,7 +110,8 @@ Column Crossings(const mirror::PathTextures& textures, double u, double v)
   for (int k = 0; k < 96; ++k)
   {
     const mirror::ReliefPathTransition change =
-      mirror::reliefPathCellTransition(ray, list, count, centre, base, -1e30f, t, end, !solid);
+      mirror::reliefPathCellTransition(
+        ray, list, count, centre, base, -1e30f, t, end, !solid, false);
     if (change.t < 0.0f)
     {
       break;

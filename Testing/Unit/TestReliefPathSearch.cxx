@@ -499,7 +499,8 @@ double RegionShareError(const Pixel& pixel, float turn = 0.0f)
     ReliefRay regionRay = ray;
     regionRay.origin.x += offset * regions.right.x;
     regionRay.origin.y += offset * regions.right.y;
-    const ReliefHit hit = reliefPathElementWalk(regionRay, nearest.element, nearest.near);
+    const ReliefHit hit =
+      reliefPathElementWalk(regionRay, nearest.element, nearest.near, false);
     // what the shader lights the region with (reliefPathRegionSurfaces) is what its walk met
     const vec3 surface(reliefPathEntry(regions.normalsU, r), reliefPathEntry(regions.normalsV, r),
       reliefPathEntry(regions.normalsDepth, r));

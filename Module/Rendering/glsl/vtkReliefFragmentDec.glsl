@@ -332,7 +332,7 @@ vec3 reliefPathShadeFootprint(ReliefFrame frame, ReliefFragment fragment, vec2 u
 #ifdef RELIEF_PATH_RELIEF_BASE
     ReliefHit hit = RELIEF_SEARCH(walked, reliefLinearSteps, reliefBinarySteps);
 #else
-    ReliefHit hit = reliefPathElementWalk(walked, 0, vec2(0.0));
+    ReliefHit hit = reliefPathElementWalk(walked, 0, vec2(0.0), false);
 #endif
     samples += hit.samples;
     if (!reliefFrameRayLeft(frame, walked, hit))

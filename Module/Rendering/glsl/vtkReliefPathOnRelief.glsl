@@ -66,7 +66,7 @@ ReliefHit reliefPathOnReliefWalk(ReliefRay ray, float tStart, float tEnd, bool s
   for (int turn = 0; turn < RELIEF_PATH_BASE_TURNS; ++turn)
   {
     // where the ray enters the features' solid from t on (t itself where it is in it)
-    ReliefHit features = reliefPathWalk(ray, min(t, tEnd), tEnd, 0, vec2(0.0f, 0.0f));
+    ReliefHit features = reliefPathWalk(ray, min(t, tEnd), tEnd, 0, vec2(0.0f, 0.0f), true);
     samples += features.samples;
     nearest = reliefPathNearer(nearest, reliefPathNearest.gap, reliefPathNearest.element,
       reliefPathNearest.joins, reliefPathNearest.near);

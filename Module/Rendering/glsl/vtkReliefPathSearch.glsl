@@ -691,7 +691,8 @@ ReliefPathEvent reliefPathElementEvents(
 // Where the ray, within one cell from tFrom to tTo, first passes from air into matter
 // (intoMatter) or from matter into air, with the normal and material of the surface
 // crossed there; t = -1 where it does not. `nearest` counts the cell's elements' gaps
-// along the ray up to there, `samples` the element tests.
+// along the ray up to there (where `tracking`: for the view ray's region sampling),
+// `samples` the element tests.
 struct ReliefPathTransition
 {
   float t;
@@ -702,7 +703,7 @@ struct ReliefPathTransition
 };
 
 ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count, vec2 near,
-  float base, float top, float tFrom, float tTo, bool intoMatter)
+  float base, float top, float tFrom, float tTo, bool intoMatter, bool tracking)
 {
   // Each element's state is kept between crossings (what it makes of the ray: 0 nothing,
   // 1 matter, 2 a cut, reliefPathElementClass; -1 out of reach) with its next crossing,
@@ -767,10 +768,13 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
         nextNormal[k] = vec3(0.0f, 0.0f, 1.0f);
         kind[k] = -1;
         float gap = reliefPathGap(element, ray, tBelowTop, tTo);
-        result.nearest = reliefPathNearer(result.nearest, gap, texel, element.joins, near);
-        nearestToBase = reliefPathNearer(nearestToBase,
-          reliefPathGap(element, ray, tBelowTop, max(tToBase, tBelowTop)), texel, element.joins,
-          near);
+        if (tracking)
+        {
+          result.nearest = reliefPathNearer(result.nearest, gap, texel, element.joins, near);
+          nearestToBase = reliefPathNearer(nearestToBase,
+            reliefPathGap(element, ray, tBelowTop, max(tToBase, tBelowTop)), texel,
+            element.joins, near);
+        }
         update = gap <= 0.0f;
       }
       if (update)
@@ -900,8 +904,8 @@ float reliefPathPieceStart;
 // Where the ray first enters matter in a cell from tIn to tOut (reliefPathCellTransition).
 // Below a curved frame's quadric (RELIEF_CURVED_FRAME) the ray bends, and is followed in
 // straight pieces (the paper tracks the surface's curvature along the ray, s5.1).
-ReliefPathTransition reliefPathCellEntry(
-  ReliefRay ray, int list, int count, vec2 near, float base, float top, float tIn, float tOut)
+ReliefPathTransition reliefPathCellEntry(ReliefRay ray, int list, int count, vec2 near,
+  float base, float top, float tIn, float tOut, bool tracking)
 {
 #ifdef RELIEF_CURVED_FRAME
   int pieces = reliefPathPieces(ray, tIn, tOut);
@@ -914,7 +918,7 @@ ReliefPathTransition reliefPathCellEntry(
     float t0 = mix(tIn, tOut, float(p) / float(pieces));
     float t1 = mix(tIn, tOut, float(p + 1) / float(pieces));
     entry = reliefPathCellTransition(
-      reliefPathChord(ray, t0, t1), list, count, near, base, top, t0, t1, true);
+      reliefPathChord(ray, t0, t1), list, count, near, base, top, t0, t1, true, tracking);
     samples += entry.samples;
     nearest = reliefPathNearer(
       nearest, entry.nearest.gap, entry.nearest.element, entry.nearest.joins, entry.nearest.near);
@@ -932,7 +936,7 @@ ReliefPathTransition reliefPathCellEntry(
   return entry;
 #else
   // (a loop of one piece costs llvmpipe a tenth of the frame)
-  return reliefPathCellTransition(ray, list, count, near, base, top, tIn, tOut, true);
+  return reliefPathCellTransition(ray, list, count, near, base, top, tIn, tOut, true, tracking);
 #endif
 }
 
@@ -940,8 +944,11 @@ ReliefPathTransition reliefPathCellEntry(
 // or a miss at tEnd. `samples` counts cells visited and elements tested. Where `alone` is
 // an element's data texel, through that element alone, its copy of the tile nearest to
 // aloneNear, as one cell from tStart to tEnd: what region sampling's rays meet
-// (reliefPathRegionSurfaces finds it in one pass; the unit tests compare the two).
-ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec2 aloneNear)
+// (reliefPathRegionSurfaces finds it in one pass; the unit tests compare the two). The
+// nearest elements (reliefPathNearest) are tracked where `tracking` (a constant at each
+// call: where false, the compiler leaves that code out of the walk).
+ReliefHit reliefPathWalk(
+  ReliefRay ray, float tStart, float tEnd, int alone, vec2 aloneNear, bool tracking)
 {
   vec4 header = RELIEF_PATH_TEXEL(0);
   float base = header.x;
@@ -1003,7 +1010,8 @@ ReliefHit reliefPathWalk(ReliefRay ray, float tStart, float tEnd, int alone, vec
       vec2 centre =
         alone > 0 ? aloneNear : vec2((cell.x + 0.5f) / size.x, (cell.y + 0.5f) / size.y);
       ReliefPathTransition entry =
-        reliefPathCellEntry(ray, int(cellTexel.x), count, centre, base, cellTexel.z, tIn, tOut);
+        reliefPathCellEntry(ray, int(cellTexel.x), count, centre, base, cellTexel.z, tIn, tOut,
+          tracking);
       samples += entry.samples;
       // the cell's second is another element than its nearest, and so counted exactly
       nearest = reliefPathNearer(nearest, entry.nearest.gap, entry.nearest.element,
@@ -1041,17 +1049,18 @@ float reliefPathStraightEnd(ReliefRay ray)
 // The walk of a footprint's ray from depth 0 to the deepest cut (a curved frame's ray
 // spans its range to there over t in [0, 1]: reliefQuadricFrame), through one element
 // alone (its data texel; its copy of the tile nearest to `near`), on straight through its
-// joins (reliefPathListedElement), or through all of them where `element` is 0.
-ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near)
+// joins (reliefPathListedElement), or through all of them where `element` is 0; the
+// nearest elements tracked where `tracking` (reliefPathWalk).
+ReliefHit reliefPathElementWalk(ReliefRay ray, int element, vec2 near, bool tracking)
 {
   return reliefPathWalk(
-    ray, 0.0f, ray.bend != 0.0f ? 1.0f : reliefPathStraightEnd(ray), element, near);
+    ray, 0.0f, ray.bend != 0.0f ? 1.0f : reliefPathStraightEnd(ray), element, near, tracking);
 }
 
 // The path-feature search as a relief search: the view ray through all the features.
 ReliefHit reliefSearchPathFeatures(ReliefRay ray, int linearSteps, int refinementSteps)
 {
-  return reliefPathElementWalk(ray, 0, vec2(0.0f, 0.0f));
+  return reliefPathElementWalk(ray, 0, vec2(0.0f, 0.0f), true);
 }
 
 // How far from its centre a pixel reaches in (u, v), whose neighbours along screen x and
@@ -1421,7 +1430,8 @@ float reliefPathLightVisibility(vec3 clearPoint, vec3 lightDirection)
   float hitMaterial = reliefPathHitMaterial;
   ReliefPathNearest hitNearest = reliefPathNearest;
   ReliefHit blocked =
-    reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f, 0, vec2(0.0f, 0.0f));
+    reliefPathWalk(reliefLightRay(clearPoint, lightDirection), 0.0f, 1.0f, 0, vec2(0.0f, 0.0f),
+      false);
   reliefPathHitNormal = hitNormal;
   reliefPathHitMaterial = hitMaterial;
   reliefPathNearest = hitNearest;
