@@ -108,15 +108,20 @@ bool IsCentred(const Profile& profile)
 {
   const double tolerance =
     1e-9 * std::max({ 1.0, profile.Extent, profile.Bottom - profile.Top });
-  std::vector<double> levels;
+  std::vector<double> depths;
   for (const dvec2& point : profile.Points)
   {
-    levels.push_back(point.y);
+    depths.push_back(point.y);
   }
-  std::sort(levels.begin(), levels.end());
-  levels.erase(std::unique(levels.begin(), levels.end(),
-                 [tolerance](double a, double b) { return b - a <= tolerance; }),
-    levels.end());
+  std::sort(depths.begin(), depths.end());
+  std::vector<double> levels;
+  for (const double depth : depths)
+  {
+    if (levels.empty() || depth - levels.back() > tolerance)
+    {
+      levels.push_back(depth);
+    }
+  }
   const size_t n = profile.Points.size();
   std::vector<double> crossings;
   for (size_t band = 0; band + 1 < levels.size(); ++band)

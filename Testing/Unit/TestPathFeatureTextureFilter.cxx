@@ -221,6 +221,7 @@ TEST(PathFeatureTextureFilter, RevolvedOnceAtJoints)
   const std::vector<dvec2> vee = { { -1.0, 0.0 }, { 0.0, 1.0 }, { 1.0, 0.0 } };
   const std::vector<dvec2> ridge = { { -1.0, 0.0 }, { 0.0, -0.5 }, { 1.0, 0.0 } };
   const std::vector<dvec2> dovetail = { { -0.5, 0.0 }, { -1.0, 0.6 }, { 1.0, 0.6 }, { 0.5, 0.0 } };
+  const std::vector<dvec2> diamond = { { -1.0, 0.0 }, { 0.0, -0.5 }, { 1.0, 0.0 }, { 0.0, 0.5 } };
   const std::vector<dvec2> notches = { { -1.0, 0.0 }, { -0.6, 0.5 }, { -0.2, 0.0 }, { 0.2, 0.0 },
     { 0.6, 0.5 }, { 1.0, 0.0 } };
   const std::vector<dvec2> slanted = { { -1.0, 0.0 }, { 0.5, 1.0 }, { 1.0, 0.0 } };
@@ -243,6 +244,7 @@ TEST(PathFeatureTextureFilter, RevolvedOnceAtJoints)
     { notches, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 1.0f, "two notches (two intervals)" },
     { slanted, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 1.0f, "an off-centre vee" },
     { rimmed, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 1.0f, "a cut with rims (two intervals above)" },
+    { diamond, { 0.1, 0.5 }, 1.0, 0.0f, 0.0f, 0.0f, "a diamond (centred, cuts and adds)" },
     { vee, { 0.1, 0.5 }, 0.5, 0.0f, 0.0f, 0.0f, "a narrowing vee" } };
   for (const Case& c : cases)
   {

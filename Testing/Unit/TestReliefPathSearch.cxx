@@ -344,6 +344,40 @@ TEST(ReliefPathSearch, CornersRevolveOnce)
   EXPECT_GE(agreement.Agreeing, agreement.Rays * 99 / 100) << agreement.Slivers << " slivers";
 }
 
+// The filter puts the base as far below the polygons as the tallest addition rises, so a
+// ridge's flat top lies at depth 0, where the view ray starts: inside it. The ray meets
+// the top there, lit as the top and with the ridge's material (region sampling's rays,
+// reliefPathRegionSurfaces, meet the same), not the actor's.
+TEST(ReliefPathSearch, ATopAtThePolygonShowsItsMaterial)
+{
+  Scene scene;
+  scene.Profiles = { Ridge };
+  scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1, 0 });
+  vtkSmartPointer<vtkPolyData> paths = PathsData(scene.Paths);
+  vtkNew<vtkIntArray> materials;
+  materials->SetName("Material");
+  materials->InsertNextValue(0);
+  paths->GetCellData()->AddArray(materials);
+  vtkNew<vtkPathFeatureTextureFilter> filter;
+  filter->AddMaterial(0.8, 0.2, 0.1, 0.5, 20.0);
+  filter->SetPathsData(paths);
+  filter->SetProfilesData(ProfilesData(scene.Profiles));
+  filter->Update();
+  const PathTextures textures = Textures(filter);
+  CurrentPaths = &textures;
+  for (const vec3& direction : { vec3(0.0f, 0.0f, 1.0f), vec3(0.3f, 0.2f, 1.0f) })
+  {
+    const ReliefHit hit = reliefSearchPathFeatures(Ray(vec2(0.5f, 0.5f), direction), 0, 0);
+    EXPECT_TRUE(hit.hit);
+    EXPECT_NEAR(hit.position.z, 0.0f, 1e-6f);
+    EXPECT_GE(reliefPathHitMaterial, 0.0f) << direction.x;
+    EXPECT_NEAR(normalize(reliefPathHitNormal).z, -1.0f, 1e-6f) << direction.x;
+  }
+  // beside the ridge, the plain base with the actor's material
+  reliefSearchPathFeatures(Ray(vec2(0.5f, 0.8f), vec3(0.0f, 0.0f, 1.0f)), 0, 0);
+  EXPECT_EQ(reliefPathHitMaterial, -1.0f);
+}
+
 // Below a curved surface's quadric (the quadric frame, vtkOpenGLQuadricPathFeatureMapper)
 // the view ray's depth is quadratic along it, its range [0, 1] running to the deepest cut
 // or back out of the quadric (then it passes the outline: a miss). The walk follows it in

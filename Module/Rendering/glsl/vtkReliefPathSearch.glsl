@@ -225,7 +225,7 @@ int reliefPathInsideProfile(ReliefPathElement element, float x, float y0, float 
 }
 
 // The profile coordinates (x, y) of a point, and the scale there (z); z = 0 where the
-// feature has narrowed to nothing, or beyond an exact join.
+// feature has narrowed to nothing, or beyond an end that is not revolved.
 vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
 {
   vec2 offset = vec2(point.x, point.y) - element.start;
@@ -237,7 +237,7 @@ vec3 reliefPathProfileAt(ReliefPathElement element, vec3 point, float base)
   {
     if ((element.rounded & (along < 0.0f ? 1 : 2)) == 0)
     {
-      return vec3(0.0f, 0.0f, 0.0f); // an exact join: its neighbour's part goes on
+      return vec3(0.0f, 0.0f, 0.0f); // not revolved: its neighbour holds what goes on
     }
     // the revolved end: the distance to the end point, on the side the point is
     vec2 centre = along < 0.0f ? element.start : element.end;
@@ -551,7 +551,7 @@ ReliefPathEvent reliefPathWallEvents(ReliefPathEvent best, ReliefPathElement ele
       (end > 0 && max(alongAfter, alongBest) <= element.span) ||
       (element.rounded & (end < 0 ? 1 : 2)) == 0)
     {
-      continue; // the ray stays beside the element's straight part; an exact join
+      continue; // the ray stays beside the element's straight part; an end not revolved
     }
     vec2 centre = end < 0 ? element.start : element.end;
     float radius = w * (end < 0 ? element.scaleStart : element.scaleEnd) * abs(opening);
@@ -597,8 +597,9 @@ float reliefPathGap(ReliefPathElement element, ReliefRay ray, float t0, float t1
 }
 
 // The first crossing after `after` and before best.t of the element's facets (straight
-// and revolved about its ends), of the planes across its exact joins, and of the
-// walls up from its cuts' openings, where the ray passes above the base.
+// and revolved about its ends), of the planes across its ends that are not revolved and
+// through its axis beyond those that are (a profile not centred), and of the walls up
+// from its cuts' openings, where the ray passes above the base.
 ReliefPathEvent reliefPathElementEvents(
   ReliefPathEvent best, ReliefPathElement element, ReliefRay ray, float base, float after)
 {
@@ -641,8 +642,8 @@ ReliefPathEvent reliefPathElementEvents(
     best = reliefPathRevolvedEvents(best, element, ray, base, previous, point, after, end);
     previous = point;
   }
-  // the plane across an exact join, where the element gives way to its neighbour (its
-  // state changes there, on no facet)
+  // the plane across an end that is not revolved, where the element gives way to its
+  // neighbour (its state changes there, on no facet)
   if (sweep.along1 != 0.0f)
   {
     float tStart = (element.rounded & 1) == 0 ? -sweep.along0 / sweep.along1 : -1e30f;
@@ -742,6 +743,9 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
   float material = -1.0f;
   bool atBase = false;
   int j = -1;
+  // the highest addition that holds the ray where the cell's crossings start
+  float startPriority = -1e30f;
+  float startMaterial = -1.0f;
   for (int e = 0; e <= RELIEF_PATH_EVENTS; ++e)
   {
     // the elements' updates, in one loop of one element's update (on llvmpipe each block
@@ -793,6 +797,9 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
         kind[k] = reliefPathElementClass(
           element, reliefRayAt(ray, 0.5f * (t + min(following.t, tBase))), base);
         result.samples += starting ? 0 : 1;
+        bool adds = starting && kind[k] == 1 && element.priority >= startPriority;
+        startPriority = adds ? element.priority : startPriority;
+        startMaterial = adds ? element.material : startMaterial;
       }
     }
     // the next crossing: the base (j = -1) or an element's
@@ -826,7 +833,8 @@ ReliefPathTransition reliefPathCellTransition(ReliefRay ray, int list, int count
         result.nearest = t <= tToBase ? nearestToBase : result.nearest;
         result.t = t;
         result.normal = normal;
-        result.material = material;
+        // (a ray that starts in an addition, on a top at the polygon: that addition's)
+        result.material = e == 0 && held ? startMaterial : material;
         return result;
       }
     }
