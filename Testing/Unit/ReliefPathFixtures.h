@@ -80,6 +80,21 @@ inline vtkSmartPointer<vtkPolyData> PathsData(const std::vector<PathSpec>& paths
   return data;
 }
 
+/// The paths, each with the material of the filter's index in `materials` ("Material").
+inline vtkSmartPointer<vtkPolyData> PathsData(
+  const std::vector<PathSpec>& paths, const std::vector<int>& materials)
+{
+  vtkSmartPointer<vtkPolyData> data = PathsData(paths);
+  vtkNew<vtkIntArray> array;
+  array->SetName("Material");
+  for (const int material : materials)
+  {
+    array->InsertNextValue(material);
+  }
+  data->GetCellData()->AddArray(array);
+  return data;
+}
+
 inline vtkSmartPointer<vtkPolyData> ProfilesData(const std::vector<std::vector<dvec2>>& profiles)
 {
   vtkNew<vtkPoints> points;

@@ -93,11 +93,7 @@ TEST(PathFeatureTextureFilter, DataTexelsHoldPathsProfilesAndMaterials)
   PathSpec path{ { { 0.1, 0.1 }, { 0.9, 0.1 } }, 0.1, 0, 3 };
   path.ScaleEnd = 0.5;
   scene.Paths.push_back(path);
-  vtkSmartPointer<vtkPolyData> paths = PathsData(scene.Paths);
-  vtkNew<vtkIntArray> materials;
-  materials->SetName("Material");
-  materials->InsertNextValue(0);
-  paths->GetCellData()->AddArray(materials);
+  vtkSmartPointer<vtkPolyData> paths = PathsData(scene.Paths, { 0 });
   vtkNew<vtkPathFeatureTextureFilter> filter;
   EXPECT_EQ(filter->AddMaterial(0.8, 0.2, 0.1, 0.5, 20.0), 0);
   filter->SetPathsData(paths);

@@ -353,14 +353,9 @@ TEST(ReliefPathSearch, ATopAtThePolygonShowsItsMaterial)
   Scene scene;
   scene.Profiles = { Ridge };
   scene.Paths.push_back({ { { 0.1, 0.5 }, { 0.9, 0.5 } }, 0.1, 0 });
-  vtkSmartPointer<vtkPolyData> paths = PathsData(scene.Paths);
-  vtkNew<vtkIntArray> materials;
-  materials->SetName("Material");
-  materials->InsertNextValue(0);
-  paths->GetCellData()->AddArray(materials);
   vtkNew<vtkPathFeatureTextureFilter> filter;
   filter->AddMaterial(0.8, 0.2, 0.1, 0.5, 20.0);
-  filter->SetPathsData(paths);
+  filter->SetPathsData(PathsData(scene.Paths, { 0 }));
   filter->SetProfilesData(ProfilesData(scene.Profiles));
   filter->Update();
   const PathTextures textures = Textures(filter);
