@@ -577,6 +577,13 @@ double ScaleAt(const Path& path, double arc)
                            : path.ScaleStart;
 }
 
+// How far from its centre line an element's feature reaches, in tiles.
+double ElementRadius(const Element& element, const Path& path, const Profile& profile)
+{
+  const double scale = std::max(ScaleAt(path, element.ArcStart), ScaleAt(path, element.ArcEnd));
+  return path.HalfWidth * profile.Extent * scale;
+}
+
 // Where a path turns (not exactly straight on), the shader revolves the profile about the
 // joint beyond the previous element's end and before the next one's start; one of the two
 // holds all the other does where the profile is centred (then, within the revolved
@@ -594,19 +601,12 @@ int RevolvedOnce(
   {
     return 0;
   }
-  const double reach = path.HalfWidth * profile.Extent * path.ScaleStart;
+  const double reach = ElementRadius(previous, path, profile); // one scale along the path
   if (glm::length(previous.End - previous.Start) >= reach)
   {
     return 2;
   }
   return glm::length(next.End - next.Start) >= reach ? 1 : 0;
-}
-
-// How far from its centre line an element's feature reaches, in tiles.
-double ElementRadius(const Element& element, const Path& path, const Profile& profile)
-{
-  const double scale = std::max(ScaleAt(path, element.ArcStart), ScaleAt(path, element.ArcEnd));
-  return path.HalfWidth * profile.Extent * scale;
 }
 
 // The grid cells (wrapped, row-major) within reach of `element`.
