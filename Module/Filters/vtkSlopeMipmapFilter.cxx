@@ -11,7 +11,10 @@ vtkStandardNewMacro(vtkSlopeMipmapFilter);
 
 namespace
 {
-constexpr int Components = 5;
+constexpr int Components = 6;
+constexpr int ChildCodes = 32;     // 5 bits a child
+constexpr int ChildExponents = 16; // 4 bits: steps 2^-4 to 2^-19
+constexpr int ExponentUnit = 1 << 20;
 constexpr int ZeroCode = 2048;      // the code of 0; codes above are positive
 constexpr double CodesPerOctave = 128.0;
 constexpr double LeastOctave = -15.0; // magnitude code m stands for 2^(m / 128 - 15)
@@ -47,11 +50,38 @@ float vtkSlopeMipmapFilter::EncodeSlopes(double low, double high)
   return static_cast<float>(SlopeCode(low, false) * 4096 + SlopeCode(high, true));
 }
 
-void vtkSlopeMipmapFilter::PackNode(const double node[5], float texel[3])
+float vtkSlopeMipmapFilter::EncodeChildTops(double top, const double childTops[4])
+{
+  double largest = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    largest = std::max(largest, childTops[k] - top);
+  }
+  int exponent = ChildExponents - 1;
+  while (exponent > 0 && std::ldexp(ChildCodes - 1, -(exponent + 4)) < largest)
+  {
+    --exponent;
+  }
+  const double step = std::ldexp(1.0, -(exponent + 4));
+  // the GPU adds the offset to the top in float and may round the step's division: a
+  // code never reaches within 2^-20 + step / 1024 of the child's top
+  const double margin = std::ldexp(1.0, -20) + step / 1024.0;
+  int packed = exponent * ExponentUnit;
+  for (int k = 0, weight = 1; k < 4; ++k, weight *= ChildCodes)
+  {
+    const double offset = childTops[k] - top - margin;
+    const int code = offset > 0.0 ? std::min(static_cast<int>(offset / step), ChildCodes - 1) : 0;
+    packed += code * weight;
+  }
+  return static_cast<float>(packed);
+}
+
+void vtkSlopeMipmapFilter::PackNode(const double node[6], float texel[4])
 {
   texel[0] = static_cast<float>(node[0]);
   texel[1] = EncodeSlopes(node[1], node[2]);
   texel[2] = EncodeSlopes(node[3], node[4]);
+  texel[3] = static_cast<float>(node[5]);
 }
 
 void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArray* output)
@@ -97,6 +127,47 @@ void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArr
     node[3] = std::min(node[3], child[3]);
     node[4] = std::max(node[4], child[4]);
   });
+  this->CodeChildTops(width, height, values);
+}
+
+void vtkSlopeMipmapFilter::CodeChildTops(int width, int height, float* values)
+{
+  int atlas[2];
+  GetAtlasSize(width, height, atlas);
+  auto at = [&](const int origin[2], int x, int y) {
+    return values + (static_cast<size_t>(origin[1] + y) * atlas[0] + origin[0] + x) * Components;
+  };
+  for (int level = 1; level <= GetTopLevel(width, height); ++level)
+  {
+    int origin[2], size[2], childOrigin[2], childSize[2];
+    GetLevelPlacement(width, height, level, origin, size);
+    GetLevelPlacement(width, height, level - 1, childOrigin, childSize);
+    for (int j = 0; j < size[1]; ++j)
+    {
+      int firstRow, lastRow;
+      GetChildRange(j, height, level, firstRow, lastRow);
+      for (int i = 0; i < size[0]; ++i)
+      {
+        int firstColumn, lastColumn;
+        GetChildRange(i, width, level, firstColumn, lastColumn);
+        float* node = at(origin, i, j);
+        // a slot no child fills (an axis of one node) is never asked for: the node's top
+        double childTops[4] = { node[0], node[0], node[0], node[0] };
+        bool filled[4] = { false, false, false, false };
+        for (int y = firstRow; y <= lastRow; ++y)
+        {
+          for (int x = firstColumn; x <= lastColumn; ++x)
+          {
+            const int slot = std::min(x - firstColumn, 1) + 2 * std::min(y - firstRow, 1);
+            const double childTop = at(childOrigin, x, y)[0];
+            childTops[slot] = filled[slot] ? std::min(childTops[slot], childTop) : childTop;
+            filled[slot] = true;
+          }
+        }
+        node[5] = EncodeChildTops(node[0], childTops);
+      }
+    }
+  }
 }
 
 void vtkSlopeMipmapFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -14,10 +14,14 @@
  * cannot fall in the node, that it cannot fall to 0 before the node's exit (a Lipschitz
  * bound), or that it only falls, so the ray meets the field at most once there.
  *
+ * Each node above level 0 also holds the least depths of its four children, coded
+ * relative to its own (ChildTopCodes): a search holding a node's texel knows its
+ * children's tops without reading them, and passes over the ones the ray clears.
+ *
  * Output: one VTK_FLOAT image, scalars "TopAndSlopes", of the atlas size of
- * vtkMaximumMipmapFilter, five components per texel: the least depth, then the least and
- * largest dD/dx, the least and largest dD/dy. The mapper uploads the boxes in 12-bit
- * logarithmic codes, rounded outward (PackNode).
+ * vtkMaximumMipmapFilter, six components per texel: the least depth, then the least and
+ * largest dD/dx, the least and largest dD/dy, then the children's tops coded (0 at level
+ * 0). The mapper uploads the boxes in 12-bit logarithmic codes, rounded outward (PackNode).
  */
 #ifndef vtkSlopeMipmapFilter_h
 #define vtkSlopeMipmapFilter_h
@@ -32,7 +36,18 @@ public:
   vtkTypeMacro(vtkSlopeMipmapFilter, vtkMaximumMipmapFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  int GetOutputComponents() override { return 5; }
+  int GetOutputComponents() override { return 6; }
+
+  /**
+   * The least depths of a node's children (slot x + 2 y: the child at offset x along u
+   * and y along v; the last node of a row folds its odd third child into offset 1), coded
+   * relative to the node's least depth `top`, as the shader decodes them
+   * (reliefSlopeChildTops): four 5-bit codes c and a 4-bit exponent e packed in an exact
+   * integer, e 2^20 + c0 + 32 c1 + 1024 c2 + 32768 c3; a child's top decodes to
+   * top + c 2^-(e + 4), rounded down (toward the top, what the search may assume) with a
+   * margin for the GPU's float rounding, on the finest step that holds the largest.
+   */
+  static float EncodeChildTops(double top, const double childTops[4]);
 
   /**
    * Two slope bounds [low, high] (depth per cell) packed in one float, as the shader
@@ -44,10 +59,11 @@ public:
   static float EncodeSlopes(double low, double high);
 
   /**
-   * The three floats a node of the output (its five components) is uploaded as: its
-   * least depth and its two slope boxes, each packed by EncodeSlopes.
+   * The four floats a node of the output (its six components) is uploaded as: its
+   * least depth, its two slope boxes, each packed by EncodeSlopes, and its children's
+   * coded tops.
    */
-  static void PackNode(const double node[5], float texel[3]);
+  static void PackNode(const double node[6], float texel[4]);
 
 protected:
   vtkSlopeMipmapFilter();
@@ -56,6 +72,9 @@ protected:
   const char* GetProductName() override { return "a slope mipmap"; }
   const char* GetOutputName() override { return "TopAndSlopes"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;
+
+  /// Fills the children's coded tops of every node above level 0 of the atlas `values`.
+  static void CodeChildTops(int width, int height, float* values);
 
 private:
   vtkSlopeMipmapFilter(const vtkSlopeMipmapFilter&) = delete;

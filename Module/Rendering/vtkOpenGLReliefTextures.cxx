@@ -57,7 +57,10 @@ bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
   // method's image would be read with another's layout
   texture->ResetFormatAndType();
   texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGB);
+  texture->SetFormat(components == 1 ? GL_RED
+      : components == 2             ? GL_RG
+      : components == 3             ? GL_RGB
+                                    : GL_RGBA);
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
   texture->SetMinificationFilter(filter);
@@ -96,7 +99,7 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
   return codes;
 }
 
-// vtkSlopeMipmapFilter's atlas of a reliefSize map as uploaded: three floats a node
+// vtkSlopeMipmapFilter's atlas of a reliefSize map as uploaded: four floats a node
 // (PackNode), from level 1's first column on: SlopeMipmap solves single cells from the
 // height map and never reads level 0 (vtkReliefGridSearch.glsl's RELIEF_SLOPE_NODE), two
 // thirds of the atlas. `dimensions` become the uploaded image's (the last column where the
@@ -115,16 +118,16 @@ vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(
     : atlasWidth - 1;
   dimensions[0] = atlasWidth - first;
   auto packed = vtkSmartPointer<vtkFloatArray>::New();
-  packed->SetNumberOfComponents(3);
+  packed->SetNumberOfComponents(4);
   packed->SetNumberOfTuples(static_cast<vtkIdType>(dimensions[0]) * dimensions[1]);
   vtkSMPTools::For(0, packed->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType node = begin; node < end; ++node)
     {
       const vtkIdType row = node / dimensions[0];
       const vtkIdType column = first + node % dimensions[0];
-      double values[5];
+      double values[6];
       nodes->GetTuple(row * atlasWidth + column, values);
-      vtkSlopeMipmapFilter::PackNode(values, packed->GetPointer(3 * node));
+      vtkSlopeMipmapFilter::PackNode(values, packed->GetPointer(4 * node));
     }
   });
   return packed;
@@ -421,7 +424,8 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   const unsigned int internalFormat = cones ? GL_RG8
     : components == 1                       ? GL_R32F
     : components == 2                       ? GL_RG32F
-                                            : GL_RGB32F;
+    : components == 3                       ? GL_RGB32F
+                                            : GL_RGBA32F;
   if (!UploadTexture(this->Texture, window, dimensions, values, internalFormat,
         vtkTextureObject::Nearest))
   {

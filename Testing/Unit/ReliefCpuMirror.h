@@ -74,7 +74,7 @@ struct DepthField
 
 /// A pyramid as the GPU holds it: level L of max(1, size >> L) nodes per axis, unpacked
 /// from the atlas of vtkMaximumMipmapFilter (least depths) or vtkSlopeMipmapFilter (the
-/// texels of RELIEF_SLOPE_NODE: least depth and packed slope bounds).
+/// texels of RELIEF_SLOPE_NODE: least depth, packed slope bounds, children's coded tops).
 template <typename Value>
 struct NodePyramid
 {

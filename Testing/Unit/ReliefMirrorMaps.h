@@ -103,10 +103,10 @@ inline SlopePyramid SlopesOf(const DepthField& field)
 {
   vtkNew<vtkSlopeMipmapFilter> filter;
   return PyramidFromAtlas<vec4>(filter, field, [](const float* node) {
-    const double values[5] = { node[0], node[1], node[2], node[3], node[4] };
-    float texel[3];
+    const double values[6] = { node[0], node[1], node[2], node[3], node[4], node[5] };
+    float texel[4];
     vtkSlopeMipmapFilter::PackNode(values, texel);
-    return vec4(texel[0], texel[1], texel[2], 0.0f);
+    return vec4(texel[0], texel[1], texel[2], texel[3]);
   });
 }
 

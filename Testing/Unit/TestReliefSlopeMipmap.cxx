@@ -1,6 +1,7 @@
 // The SlopeMipmap search of vtkReliefSlopeSearch.glsl and the pyramid of
 // vtkSlopeMipmapFilter it trusts: exact against the brute-force reference, boxes that hold
-// every gradient under their node, codes rounded outward.
+// every gradient under their node, codes rounded outward, children's tops coded at or above
+// every child.
 #include "ReliefSearchReference.h"
 
 #include <algorithm>
@@ -78,6 +79,99 @@ TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
   std::cout << "terrain at 80 degrees: MaximumMipmap " << mipmap / 2000.0
             << " samples per ray, SlopeMipmap " << slopes / 2000.0 << "\n";
   EXPECT_LT(slopes, 0.8 * mipmap);
+}
+
+TEST_F(ReliefSlopeMipmap, ChildTopsInHandSaveReads)
+{
+  // the same rays with every child's top coded as its parent's (the codes' zero): the
+  // search must then read each child it enters, and stays exact
+  const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
+    [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
+  CurrentField = &terrain.Field;
+  CurrentPyramid = &terrain.Pyramid;
+  SlopePyramid uncoded = AllSlopes->at(terrain.Name);
+  for (std::vector<vec4>& level : uncoded.Levels)
+  {
+    for (vec4& texel : level)
+    {
+      texel.w = 0.0f;
+    }
+  }
+  long coded = 0;
+  long plain = 0;
+  std::mt19937 generator(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float run = std::tan(80.0f * float(Pi) / 180.0f) * 0.08f;
+  for (int k = 0; k < 2000; ++k)
+  {
+    const float azimuth = 2.0f * float(Pi) * unit(generator);
+    const ReliefRay ray = reliefViewRay(vec2(unit(generator), unit(generator)),
+      vec3(run * std::cos(azimuth), run * std::sin(azimuth), 1.0f));
+    Use(terrain);
+    const ReliefHit hit = reliefSearchSlopeMipmap(ray, 0, 0);
+    CurrentSlopes = &uncoded;
+    const ReliefHit uncodedHit = reliefSearchSlopeMipmap(ray, 0, 0);
+    ASSERT_EQ(hit.hit, uncodedHit.hit);
+    ASSERT_NEAR(hit.t, uncodedHit.t, 1e-5f) << "ray " << k;
+    coded += hit.samples;
+    plain += uncodedHit.samples;
+  }
+  std::cout << "terrain at 80 degrees: " << coded / 2000.0 << " samples per ray, "
+            << plain / 2000.0 << " with the children's tops unknown\n";
+  EXPECT_LT(coded, 0.9 * plain);
+}
+
+TEST(ReliefSlopeMipmapFilter, ChildTopsLieAtOrAboveEveryChild)
+{
+  // odd sizes (a last node with three children a side, folded into its second slot), a
+  // field spanning the whole depth range and one of offsets finer than the finest step
+  for (const DepthField& field :
+    { RandomField(37, 21, 5, 0.0f, 1.0f), RandomField(19, 26, 3, 0.5f, 0.5f + 1e-6f) })
+  {
+    const SlopePyramid slopes = SlopesOf(field);
+    int checked = 0;
+    for (int level = 1; level <= slopes.Top(); ++level)
+    {
+      for (int j = 0; j < slopes.Heights[level]; ++j)
+      {
+        for (int i = 0; i < slopes.Widths[level]; ++i)
+        {
+          const vec4 texel = slopes.At(vec2(i, j), level);
+          const vec4 decoded = reliefSlopeChildTops(texel.x, texel.w);
+          int firstColumn, lastColumn, firstRow, lastRow;
+          vtkSlopeMipmapFilter::GetChildRange(i, field.Width, level, firstColumn, lastColumn);
+          vtkSlopeMipmapFilter::GetChildRange(j, field.Height, level, firstRow, lastRow);
+          float slotTop[4] = { 2.0f, 2.0f, 2.0f, 2.0f };
+          float largest = 0.0f;
+          for (int y = firstRow; y <= lastRow; ++y)
+          {
+            for (int x = firstColumn; x <= lastColumn; ++x)
+            {
+              const int slot = std::min(x - firstColumn, 1) + 2 * std::min(y - firstRow, 1);
+              const float top = slopes.At(vec2(x, y), level - 1).x;
+              slotTop[slot] = std::min(slotTop[slot], top);
+              largest = std::max(largest, top - texel.x);
+            }
+          }
+          for (int slot = 0; slot < 4; ++slot)
+          {
+            if (slotTop[slot] > 1.5f)
+            {
+              continue; // no child there (an axis of one node)
+            }
+            ASSERT_LE(decoded[slot], slotTop[slot]) << "level " << level << ", node " << i
+                                                    << ", " << j << ", slot " << slot;
+            // within a step (under 2 / 31 of the largest offset, at least 2^-19) and the
+            // margin (2^-20 and a 1024th of a step)
+            EXPECT_GE(decoded[slot], slotTop[slot] - (largest / 15.5f * 1.01f + 3e-6f))
+              << "level " << level << ", node " << i << ", " << j << ", slot " << slot;
+            ++checked;
+          }
+        }
+      }
+    }
+    EXPECT_GT(checked, field.Width * field.Height / 3);
+  }
 }
 
 TEST(ReliefSlopeMipmapFilter, BoxesHoldEveryGradientUnderTheirNode)

@@ -9,16 +9,19 @@
 //      bound, after segment tracing, Galin et al. 2020): over it, with that bound carried on;
 //  (d) most < 0: the gap only falls, so the ray meets the field at most once in the node:
 //      one read of the cell at the exit says whether, and a crossing is bracketed there;
-// otherwise down a level, where the ray reaches the node's top. Single cells are solved as
-// ExactDDA does. A bracket [above, below] holding one crossing is closed by reading cells where
-// Newton's and the secant's estimates put it, within what the rates allow, each read solving
-// the whole cell: with one crossing, the first zero of a cell entered above the field is it.
-// Exact: every skip is proven, every hit solved from a point known above the field.
+// otherwise down a level, where the ray reaches the node's top. A node's texel also holds its
+// children's tops: while it is in hand, a child the ray clears (by its top, or by the parent's
+// Lipschitz bound) is passed over without a read, so a read buys two levels' worth of tests.
+// Single cells are solved as ExactDDA does. A bracket [above, below] holding one crossing is
+// closed by reading cells where Newton's, the secant's or, with the gap and its rate known at
+// both ends, a cubic Hermite interpolant's root puts it, within what the rates allow, each read
+// solving the whole cell: with one crossing, the first zero of a cell entered above the field
+// is it. Exact: every skip is proven, every hit solved from a point known above the field.
 // Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
 // vtkReliefGridSearch.glsl (its pyramid's levels) and vtkReliefSafetySearch.glsl
 // (reliefCellAfter) before it, and RELIEF_SLOPE_NODE(node, level): vec4 (least depth, packed
-// dD/dx bounds, packed dD/dy bounds, unused) of a node above level 0, unpacked by
-// reliefSlopeDecode (the GPU's in vtkReliefGridSearch.glsl).
+// dD/dx bounds, packed dD/dy bounds, children's coded tops) of a node above level 0, unpacked
+// by reliefSlopeDecode and reliefSlopeChildTops (the GPU's in vtkReliefGridSearch.glsl).
 
 // One code of vtkSlopeMipmapFilter::EncodeSlopes: 2048 is 0, each code away from it one
 // 128th of an octave from 2^-15.
@@ -33,6 +36,24 @@ vec2 reliefSlopeDecode(float codes)
 {
   float low = floor(codes / 4096.0f);
   return vec2(reliefSlopeValue(low), reliefSlopeValue(codes - low * 4096.0f));
+}
+
+// The least depths of a node's four children (slot x + 2 y) from the node's own, `top`, and
+// their codes (vtkSlopeMipmapFilter::EncodeChildTops): each at most the child's.
+vec4 reliefSlopeChildTops(float top, float codes)
+{
+  float exponent = floor(codes / 1048576.0f);
+  float rest = codes - exponent * 1048576.0f;
+  float step = 1.0f / float(1 << (int(exponent) + 4)); // exact, unlike exp2 on some GPUs
+  vec4 tops;
+  float higher = floor(rest / 32.0f);
+  tops.x = top + (rest - 32.0f * higher) * step;
+  rest = floor(higher / 32.0f);
+  tops.y = top + (higher - 32.0f * rest) * step;
+  higher = floor(rest / 32.0f);
+  tops.z = top + (rest - 32.0f * higher) * step;
+  tops.w = top + higher * step;
+  return tops;
 }
 
 // The least and most rate of the gap along the ray (per unit of t) over a node whose
@@ -59,35 +80,58 @@ vec2 reliefPatchGap(ReliefGridRay grid, vec2 cell, vec4 depths, float t)
   return vec2(gap, rate);
 }
 
+// The root in [0, 1] of the cubic Hermite interpolant of a gap that falls from g0 > 0 to
+// g1 < 0 over [0, 1], with slopes d0 and d1 there: Newton's method on the cubic from the
+// secant's root (no read: a guess where to read).
+float reliefHermiteRoot(float g0, float d0, float g1, float d1)
+{
+  float s = g0 / (g0 - g1);
+  for (int i = 0; i < 4; ++i)
+  {
+    float s2 = s * s;
+    float s3 = s2 * s;
+    float value = (2.0f * s3 - 3.0f * s2 + 1.0f) * g0 + (s3 - 2.0f * s2 + s) * d0 +
+      (3.0f * s2 - 2.0f * s3) * g1 + (s3 - s2) * d1;
+    float slope = (6.0f * s2 - 6.0f * s) * (g0 - g1) + (3.0f * s2 - 4.0f * s + 1.0f) * d0 +
+      (3.0f * s2 - 2.0f * s) * d1;
+    s = slope < 0.0f ? min(max(s - value / slope, 0.0f), 1.0f) : s;
+  }
+  return s;
+}
+
 // The crossing in [above, below], where the gap falls all along (at a rate within
 // `rates`, rates.y < 0), so there is one, and every point before it is above the field:
 // gap and rate at `below` known (gapBelow, gap < 0). Each probe reads the cell where the
-// secant (both ends known) or Newton (from below) puts the crossing, bounded by the rates,
-// and solves it over its part of the bracket: the crossing, or a new end with its gap
-// known exactly; a probe that did not halve the bracket is followed by a bisection.
+// Hermite interpolant (gap and rate known at both ends) or Newton (from below) puts the
+// crossing, bounded by the rates, and solves it over its part of the bracket: the crossing,
+// or a new end with its gap and rate known exactly; when two probes have not halved the
+// bracket, a bisection follows.
 ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, float below,
   vec2 gapBelow, vec2 rates, int samples)
 {
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
   vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
-  float gapAbove = -1.0f;
+  vec2 gapAbove = vec2(-1.0f, 0.0f); // gap and rate at `above`, once a probe knows them
   float lastWidth = 2.0f * (below - above);
+  float olderWidth = lastWidth;
   for (int i = 0; i < 64 && above < below; ++i)
   {
     float low = max(above, below - gapBelow.x / rates.y);
     float high = min(below, below - gapBelow.x / rates.x);
-    if (gapAbove > 0.0f)
+    if (gapAbove.x > 0.0f)
     {
-      low = max(low, above - gapAbove / rates.x);
-      high = min(high, above - gapAbove / rates.y);
+      low = max(low, above - gapAbove.x / rates.x);
+      high = min(high, above - gapAbove.x / rates.y);
     }
     float width = below - above;
-    float estimate = gapAbove > 0.0f
-      ? above + width * gapAbove / (gapAbove - gapBelow.x)
+    float estimate = gapAbove.x > 0.0f
+      ? above +
+        width * reliefHermiteRoot(gapAbove.x, gapAbove.y * width, gapBelow.x, gapBelow.y * width)
       : (gapBelow.y < 0.0f ? below - gapBelow.x / gapBelow.y : 0.5f * (low + high));
     // rounding may cross the bounds: then `high` (GLSL's clamp is undefined there)
-    float probe = min(max(width > 0.5f * lastWidth ? 0.5f * (low + high) : estimate, low), high);
+    float probe = min(max(width > 0.5f * olderWidth ? 0.5f * (low + high) : estimate, low), high);
+    olderWidth = lastWidth;
     lastWidth = width;
     vec2 cell = floor(reliefGridAt(grid, probe));
     vec2 behind = vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y);
@@ -115,7 +159,8 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
     else
     {
       above = tOut;
-      gapAbove = max(reliefPatchGap(grid, cell, depths, tOut).x, 1e-30f);
+      gapAbove = reliefPatchGap(grid, cell, depths, tOut);
+      gapAbove.x = max(gapAbove.x, 1e-30f);
     }
   }
   // float rounding closed the bracket: an exact walk of what is left
@@ -158,6 +203,12 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
   float t = 0.0f;
   float gapLow = 0.0f; // a lower bound of the gap at t
   int samples = 0;
+  // the texel in hand: its node, level (-1: none) and tile, its children's tops and rates
+  vec2 heldNode = vec2(0.0f, 0.0f);
+  int heldLevel = -1;
+  vec2 heldOrigin = vec2(0.0f, 0.0f);
+  vec4 heldTops = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  vec2 heldRates = vec2(0.0f, 0.0f);
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && t < 1.0f; ++i)
   {
     vec2 cell = reliefCellAfter(grid, t, signs, inverseRun);
@@ -172,12 +223,23 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
     vec2 exits = reliefCrossings(grid,
       vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
     float tOut = min(max(min(exits.x, exits.y), t), 1.0f);
-    samples += 1;
+    float zOut = grid.depth + tOut * grid.descent;
     bool over = false;
     float nextLow = 0.0f;
-    if (level == 0)
+    if (level + 1 == heldLevel && origin == heldOrigin &&
+      reliefPyramidParent(node, level) == heldNode)
+    {
+      // the parent's texel in hand: the node's top, and the parent's Lipschitz bound
+      vec2 slot = min(node - 2.0f * heldNode, vec2(1.0f, 1.0f));
+      float top = heldTops[int(slot.x + 2.0f * slot.y)];
+      float bound = gapLow + heldRates.x * (tOut - t);
+      over = zOut < top || bound > 0.0f;
+      nextLow = max(max(top - zOut, bound), 0.0f);
+    }
+    if (!over && level == 0)
     {
       // the cell itself: its corners hold all a node would
+      samples += 1;
       vec4 depths = RELIEF_CELL_DEPTHS(cell);
       float tHit = reliefCellIntersection(grid, cell, depths, t, tOut);
       if (tHit >= 0.0f)
@@ -187,11 +249,16 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
       over = true;
       nextLow = max(reliefPatchGap(grid, cell, depths, tOut).x, 0.0f);
     }
-    else
+    else if (!over)
     {
+      samples += 1;
       vec4 texel = RELIEF_SLOPE_NODE(node, level);
       vec2 rates = reliefSlopeRates(texel, grid);
-      float zOut = grid.depth + tOut * grid.descent;
+      heldNode = node;
+      heldLevel = level;
+      heldOrigin = origin;
+      heldTops = reliefSlopeChildTops(texel.x, texel.w);
+      heldRates = rates;
       float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
       over = zOut < texel.x || rates.x >= 0.0f || bound > 0.0f;
       nextLow = max(max(texel.x - zOut, bound), 0.0f);
