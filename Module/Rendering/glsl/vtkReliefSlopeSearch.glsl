@@ -8,7 +8,8 @@
 //  (c) gLow + least * (tOut - t) > 0: the gap cannot fall to 0 before the exit (a Lipschitz
 //      bound, after segment tracing, Galin et al. 2020): over it, with that bound carried on;
 //  (d) most < 0: the gap only falls, so the ray meets the field at most once in the node:
-//      one read of the cell at the exit says whether, and a crossing is bracketed there;
+//      the top of the child at the exit, or else one read of the cell there, says whether,
+//      and a crossing is bracketed there;
 // otherwise down a level, where the ray reaches the node's top. A node's texel also holds its
 // children's tops: while it is in hand, a child the ray clears (by its top, or by the parent's
 // Lipschitz bound) is passed over without a read, so a read buys two levels' worth of tests.
@@ -262,12 +263,21 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
       float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
       over = zOut < texel.x || rates.x >= 0.0f || bound > 0.0f;
       nextLow = max(max(texel.x - zOut, bound), 0.0f);
+      // the node's cell at the exit, whatever side of the border rounding puts it
+      vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
       if (!over && rates.y < 0.0f)
       {
-        // (d): the exit's cell says whether the one crossing is in the node
+        // (d): a gap that only falls and is still open at the exit was open all along:
+        // the exit's child says so when the ray clears its top there, else its cell
+        vec2 slot = min(floor((exitCell - low) / (0.5f * span)), vec2(1.0f, 1.0f));
+        float exitTop = heldTops[int(slot.x + 2.0f * slot.y)];
+        over = zOut < exitTop;
+        nextLow = max(exitTop - zOut, nextLow);
+      }
+      if (!over && rates.y < 0.0f)
+      {
+        // the exit's cell says whether the one crossing is in the node
         samples += 1;
-        // the node's cell at the exit, whatever side of the border rounding puts it
-        vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
         vec4 exitDepths = RELIEF_CELL_DEPTHS(exitCell);
         float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
         if (gapOut <= 0.0f)
