@@ -8,7 +8,8 @@
 - with the bricks' maps: the committed baseline, drawn by no plain Surface, and a
   selection in the view passes (ParaView names its id arrays on every representation);
 - a height map from a pipeline's image source (a Texture proxy fed by Wavelet);
-- the other frames and an exact search draw the relief too, without messages.
+- the other frames and an exact search draw the relief too, without messages;
+- Robust Binary's Safety Radius Tolerance reaches the mapper.
 
   pvpython TestReliefParaViewPython.py PLUGIN DATA BASELINE OUTPUT_DIR
 """
@@ -127,6 +128,23 @@ for setting, value in (("ReliefFrame", "Quadric"), ("ReliefFrame", "Derivative")
     check(near < 0.05 and images.differing_pixels(image, plain, 8) > 0.05,
           "%s %s draws the relief" % (setting, value))
     messages.clear()
+
+# Robust Binary's error bound: at e = 0 the exact relief; at e = 1 (the whole depth) its
+# jumps pass through the bricks, so the picture changes when the value reaches the mapper
+display.ReliefSearchMethod = "Robust Binary"
+robust = {}
+for tolerance in (0.0, 1.0):
+    display.ReliefSafetyRadiusTolerance = tolerance
+    Render(view)
+    robust[tolerance] = screenshot(view, "TestReliefParaViewPythonRobustBinary%g" % tolerance)
+display.ReliefSearchMethod = "Automatic"
+display.ReliefSafetyRadiusTolerance = 0.0
+check(not messages, "Robust Binary draws without messages: %s" % messages)
+check(images.differing_pixels(robust[0.0], relief, 32) < 0.05,
+      "Robust Binary at e = 0 draws the relief")
+loose = images.differing_pixels(robust[1.0], robust[0.0], 8)
+print("Robust Binary: %.3f%% of pixels change from e = 0 to e = 1" % (100 * loose))
+check(loose > 0.01, "Safety Radius Tolerance reaches the mapper")
 
 if failures:
     sys.exit(1)

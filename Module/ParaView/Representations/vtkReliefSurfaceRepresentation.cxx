@@ -114,6 +114,11 @@ void vtkReliefSurfaceRepresentation::SetReliefScreenTolerance(double pixels)
   this->GetReliefMapper()->GetReliefMapper()->SetScreenTolerance(pixels);
 }
 
+void vtkReliefSurfaceRepresentation::SetReliefSafetyRadiusTolerance(double tolerance)
+{
+  this->GetReliefMapper()->GetReliefMapper()->SetSafetyRadiusTolerance(tolerance);
+}
+
 void vtkReliefSurfaceRepresentation::SetReliefSelfShadowing(bool enabled)
 {
   this->GetReliefMapper()->GetReliefMapper()->SetSelfShadowing(enabled);
