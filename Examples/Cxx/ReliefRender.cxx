@@ -102,7 +102,7 @@ void PrintUsage(std::ostream& os)
         "                       (default: use the mesh's own)\n"
         "  --depth-convention   read the height map as white = deep\n"
         "  --search automatic|linear|linear-binary|secant|exact-dda|safety-radius|\n"
-        "           cone-step|maximum-mipmap\n"
+        "           cone-step|maximum-mipmap|robust-binary|slope-mipmap\n"
         "                       ray search method (default: automatic)\n"
         "  --screen-tolerance P pixels the automatic search may leave out, 0 to 100\n"
         "                       (default: 0.5; 0: exact everywhere)\n"
