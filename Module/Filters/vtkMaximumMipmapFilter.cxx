@@ -91,11 +91,12 @@ void vtkMaximumMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatA
   });
 
   ReduceLevels(width, height, 1, values,
-    [](float* node, const float* child) { *node = std::min(*node, *child); });
+    [](float* node, const float* child, int) { *node = std::min(*node, *child); });
 }
 
 void vtkMaximumMipmapFilter::ReduceLevels(int width, int height, int components, float* values,
-  const std::function<void(float* node, const float* child)>& combine)
+  const std::function<void(float* node, const float* child, int slot)>& combine,
+  const std::function<void(float* node)>& finish)
 {
   int atlas[2];
   GetAtlasSize(width, height, atlas);
@@ -123,8 +124,13 @@ void vtkMaximumMipmapFilter::ReduceLevels(int width, int height, int components,
         {
           for (int x = firstColumn; x <= lastColumn; ++x)
           {
-            combine(node, at(childOrigin, x, y));
+            combine(node, at(childOrigin, x, y),
+              std::min(x - firstColumn, 1) + 2 * std::min(y - firstRow, 1));
           }
+        }
+        if (finish)
+        {
+          finish(node);
         }
       }
     }

@@ -71,11 +71,14 @@ protected:
 
   /**
    * Fills levels 1 and up of the atlas `values` of a width x height map, `components`
-   * floats a texel, from level 0: each node starts as its first child, and
-   * combine(node, child) takes in each child.
+   * floats a texel, from level 0: each node starts as its first child, combine(node,
+   * child, slot) takes in each child (slot x + 2 y: its offset from the first child along
+   * each axis, at most 1, the last node's odd third child folded into 1), and then
+   * finish(node), when given, completes the node.
    */
   static void ReduceLevels(int width, int height, int components, float* values,
-    const std::function<void(float* node, const float* child)>& combine);
+    const std::function<void(float* node, const float* child, int slot)>& combine,
+    const std::function<void(float* node)>& finish = nullptr);
 
 private:
   vtkMaximumMipmapFilter(const vtkMaximumMipmapFilter&) = delete;

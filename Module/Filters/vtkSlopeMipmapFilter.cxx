@@ -120,54 +120,30 @@ void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArr
     }
   });
 
-  ReduceLevels(width, height, Components, values, [](float* node, const float* child) {
-    node[0] = std::min(node[0], child[0]);
-    node[1] = std::min(node[1], child[1]);
-    node[2] = std::max(node[2], child[2]);
-    node[3] = std::min(node[3], child[3]);
-    node[4] = std::max(node[4], child[4]);
-  });
-  this->CodeChildTops(width, height, values);
-}
-
-void vtkSlopeMipmapFilter::CodeChildTops(int width, int height, float* values)
-{
-  int atlas[2];
-  GetAtlasSize(width, height, atlas);
-  auto at = [&](const int origin[2], int x, int y) {
-    return values + (static_cast<size_t>(origin[1] + y) * atlas[0] + origin[0] + x) * Components;
-  };
-  for (int level = 1; level <= GetTopLevel(width, height); ++level)
-  {
-    int origin[2], size[2], childOrigin[2], childSize[2];
-    GetLevelPlacement(width, height, level, origin, size);
-    GetLevelPlacement(width, height, level - 1, childOrigin, childSize);
-    for (int j = 0; j < size[1]; ++j)
-    {
-      int firstRow, lastRow;
-      GetChildRange(j, height, level, firstRow, lastRow);
-      for (int i = 0; i < size[0]; ++i)
+  // each node's children's tops by slot, gathered as its children are taken in (the
+  // reduction runs node by node), then coded against the node's own
+  double childTops[4] = { 0.0, 0.0, 0.0, 0.0 };
+  bool filled[4] = { false, false, false, false };
+  ReduceLevels(
+    width, height, Components, values,
+    [&](float* node, const float* child, int slot) {
+      node[0] = std::min(node[0], child[0]);
+      node[1] = std::min(node[1], child[1]);
+      node[2] = std::max(node[2], child[2]);
+      node[3] = std::min(node[3], child[3]);
+      node[4] = std::max(node[4], child[4]);
+      childTops[slot] = filled[slot] ? std::min<double>(childTops[slot], child[0]) : child[0];
+      filled[slot] = true;
+    },
+    [&](float* node) {
+      // a slot no child fills (an axis of one node) is never asked for: the node's top
+      for (int k = 0; k < 4; ++k)
       {
-        int firstColumn, lastColumn;
-        GetChildRange(i, width, level, firstColumn, lastColumn);
-        float* node = at(origin, i, j);
-        // a slot no child fills (an axis of one node) is never asked for: the node's top
-        double childTops[4] = { node[0], node[0], node[0], node[0] };
-        bool filled[4] = { false, false, false, false };
-        for (int y = firstRow; y <= lastRow; ++y)
-        {
-          for (int x = firstColumn; x <= lastColumn; ++x)
-          {
-            const int slot = std::min(x - firstColumn, 1) + 2 * std::min(y - firstRow, 1);
-            const double childTop = at(childOrigin, x, y)[0];
-            childTops[slot] = filled[slot] ? std::min(childTops[slot], childTop) : childTop;
-            filled[slot] = true;
-          }
-        }
-        node[5] = EncodeChildTops(node[0], childTops);
+        childTops[k] = filled[k] ? childTops[k] : node[0];
+        filled[k] = false;
       }
-    }
-  }
+      node[5] = EncodeChildTops(node[0], childTops);
+    });
 }
 
 void vtkSlopeMipmapFilter::PrintSelf(ostream& os, vtkIndent indent)

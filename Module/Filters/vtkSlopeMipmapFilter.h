@@ -73,9 +73,6 @@ protected:
   const char* GetOutputName() override { return "TopAndSlopes"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;
 
-  /// Fills the children's coded tops of every node above level 0 of the atlas `values`.
-  static void CodeChildTops(int width, int height, float* values);
-
 private:
   vtkSlopeMipmapFilter(const vtkSlopeMipmapFilter&) = delete;
   void operator=(const vtkSlopeMipmapFilter&) = delete;

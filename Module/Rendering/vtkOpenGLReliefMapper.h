@@ -113,10 +113,11 @@ public:
    * - MaximumMipmap: skips blocks of cells the ray passes over, using a pyramid of
    *   highest points (Tevs et al. 2008), then intersects cells exactly. Exact; about
    *   log n steps.
-   * - SlopeMipmap: MaximumMipmap whose nodes also bound the slopes under them
-   *   (vtkSlopeMipmapFilter), so that one node read may also prove that the ray cannot
-   *   come down to the field before the node's exit, or meets it at most once there.
-   *   Exact; fewer samples than ConeStep at most sizes and angles, and the shortest
+   * - SlopeMipmap: MaximumMipmap whose nodes also bound the slopes under them and hold
+   *   their children's tops (vtkSlopeMipmapFilter), so that one node read may also prove
+   *   that the ray cannot come down to the field before the node's exit, or meets it at
+   *   most once there, and passes over the children it clears without reading them.
+   *   Exact; the fewest samples of the exact methods from 30 degrees and the shortest
    *   worst cases, but more work per sample (Documentation/methods.md).
    * The exact methods read the full-resolution field and ignore the step counts.
    * Changing the method rebuilds the shader once.

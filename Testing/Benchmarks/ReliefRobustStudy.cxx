@@ -18,6 +18,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace
@@ -49,15 +50,22 @@ const Setting Settings[] = {
   { "RobustBinary", &reliefSearchRobustBinary, 0.05, true },
 };
 
-DepthField StonesAt(int size)
+// The stones resampled to `size`, made once for both tables.
+const DepthField& StonesAt(int size)
 {
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-  resize->SetOutputDimensions(size, size, 1);
-  vtkNew<vtkReliefTextureFilter> relief;
-  relief->SetInputConnection(resize->GetOutputPort());
-  relief->Update();
-  return FieldOf(relief->GetOutput());
+  static std::map<int, DepthField> fields;
+  auto found = fields.find(size);
+  if (found == fields.end())
+  {
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
+    resize->SetOutputDimensions(size, size, 1);
+    vtkNew<vtkReliefTextureFilter> relief;
+    relief->SetInputConnection(resize->GetOutputPort());
+    relief->Update();
+    found = fields.emplace(size, FieldOf(relief->GetOutput())).first;
+  }
+  return found->second;
 }
 
 std::vector<ReliefRay> RaysAt(double angle, int count)
@@ -75,6 +83,25 @@ std::vector<ReliefRay> RaysAt(double angle, int count)
       vec2(u, entry(generator)), vec3(float(run * std::cos(a)), float(run * std::sin(a)), 1.0f)));
   }
   return rays;
+}
+
+// The brute-force first hit of each of `rays` (RaysAt(angle, ...)) over the stones at
+// `size`, computed once for both tables.
+const std::vector<double>& FirstHitsAt(int size, double angle, const std::vector<ReliefRay>& rays)
+{
+  static std::map<std::tuple<int, double, size_t>, std::vector<double>> hits;
+  const std::tuple<int, double, size_t> key(size, angle, rays.size());
+  auto found = hits.find(key);
+  if (found == hits.end())
+  {
+    std::vector<double> first;
+    for (const ReliefRay& ray : rays)
+    {
+      first.push_back(ReferenceHit(StonesAt(size), ray));
+    }
+    found = hits.emplace(key, std::move(first)).first;
+  }
+  return found->second;
 }
 
 DepthField Lowered(const DepthField& field, double tolerance)
@@ -121,7 +148,7 @@ std::string ReliefRobustStudy::ExactReport(const Options& options)
   std::vector<std::vector<int>> wrong(Count, std::vector<int>(options.ExactAngles.size(), 0));
   for (int size : options.Sizes)
   {
-    const DepthField field = StonesAt(size);
+    const DepthField& field = StonesAt(size);
     const DepthPyramid pyramid = PyramidOf(field);
     const SlopePyramid slopes = SlopesOf(field);
     const ConeStepMap cones = ConeMapOf(field);
@@ -132,11 +159,7 @@ std::string ReliefRobustStudy::ExactReport(const Options& options)
     for (size_t a = 0; a < options.ExactAngles.size(); ++a)
     {
       const std::vector<ReliefRay> rays = RaysAt(options.ExactAngles[a], options.Rays);
-      std::vector<double> first;
-      for (const ReliefRay& ray : rays)
-      {
-        first.push_back(ReferenceHit(field, ray));
-      }
+      const std::vector<double>& first = FirstHitsAt(size, options.ExactAngles[a], rays);
       for (size_t m = 0; m < Count; ++m)
       {
         double sum = 0.0;
@@ -206,7 +229,7 @@ std::string ReliefRobustStudy::Report(const Options& options)
         << "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (int size : options.Sizes)
   {
-    const DepthField field = StonesAt(size);
+    const DepthField& field = StonesAt(size);
     CurrentField = &field;
     const int scaledMaximum = std::min(255, std::max(32, size / 16));
     // the radii of each (e, MaximumRadius), made once for every angle and both searches
@@ -214,11 +237,7 @@ std::string ReliefRobustStudy::Report(const Options& options)
     for (double angle : options.Angles)
     {
       const std::vector<ReliefRay> rays = RaysAt(angle, options.Rays);
-      std::vector<double> first;
-      for (const ReliefRay& ray : rays)
-      {
-        first.push_back(ReferenceHit(field, ray));
-      }
+      const std::vector<double>& first = FirstHitsAt(size, angle, rays);
       double linearBinary = 0.0;
       for (const Setting& setting : Settings)
       {

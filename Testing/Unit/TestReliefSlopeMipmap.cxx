@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <vector>
 
 namespace
 {
@@ -43,6 +44,23 @@ ReliefHit SlopeMipmap(const ReliefRay& ray)
 {
   return reliefSearchSlopeMipmap(ray, 0, 0);
 }
+
+// 2000 rays at 80 degrees from random points in random azimuths, as the bench's methods
+// table sees the terrain (depth 0.08 of a tile).
+std::vector<ReliefRay> RaysAt80Degrees(unsigned seed)
+{
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float run = std::tan(80.0f * float(Pi) / 180.0f) * 0.08f;
+  std::vector<ReliefRay> rays;
+  for (int k = 0; k < 2000; ++k)
+  {
+    const float azimuth = 2.0f * float(Pi) * unit(generator);
+    rays.push_back(reliefViewRay(vec2(unit(generator), unit(generator)),
+      vec3(run * std::cos(azimuth), run * std::sin(azimuth), 1.0f)));
+  }
+  return rays;
+}
 }
 
 TEST_F(ReliefSlopeMipmap, MatchesTheReferenceEverywhere)
@@ -57,7 +75,6 @@ TEST_F(ReliefSlopeMipmap, KeepsItsHitsOnGrazingRaysThousandsOfCellsLong)
 
 TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
 {
-  // the terrain at 80 degrees, as the bench's methods table sees it (depth 0.08 tile)
   const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
     [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
   CurrentField = &terrain.Field;
@@ -65,14 +82,8 @@ TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
   Use(terrain);
   long mipmap = 0;
   long slopes = 0;
-  std::mt19937 generator(31);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const float run = std::tan(80.0f * float(Pi) / 180.0f) * 0.08f;
-  for (int k = 0; k < 2000; ++k)
+  for (const ReliefRay& ray : RaysAt80Degrees(31))
   {
-    const float azimuth = 2.0f * float(Pi) * unit(generator);
-    const ReliefRay ray = reliefViewRay(vec2(unit(generator), unit(generator)),
-      vec3(run * std::cos(azimuth), run * std::sin(azimuth), 1.0f));
     mipmap += reliefSearchMaximumMipmap(ray, 0, 0).samples;
     slopes += reliefSearchSlopeMipmap(ray, 0, 0).samples;
   }
@@ -99,20 +110,14 @@ TEST_F(ReliefSlopeMipmap, ChildTopsInHandSaveReads)
   }
   long coded = 0;
   long plain = 0;
-  std::mt19937 generator(5);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const float run = std::tan(80.0f * float(Pi) / 180.0f) * 0.08f;
-  for (int k = 0; k < 2000; ++k)
+  for (const ReliefRay& ray : RaysAt80Degrees(5))
   {
-    const float azimuth = 2.0f * float(Pi) * unit(generator);
-    const ReliefRay ray = reliefViewRay(vec2(unit(generator), unit(generator)),
-      vec3(run * std::cos(azimuth), run * std::sin(azimuth), 1.0f));
     Use(terrain);
     const ReliefHit hit = reliefSearchSlopeMipmap(ray, 0, 0);
     CurrentSlopes = &uncoded;
     const ReliefHit uncodedHit = reliefSearchSlopeMipmap(ray, 0, 0);
     ASSERT_EQ(hit.hit, uncodedHit.hit);
-    ASSERT_NEAR(hit.t, uncodedHit.t, 1e-5f) << "ray " << k;
+    ASSERT_NEAR(hit.t, uncodedHit.t, 1e-5f);
     coded += hit.samples;
     plain += uncodedHit.samples;
   }

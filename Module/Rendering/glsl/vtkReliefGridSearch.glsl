@@ -255,6 +255,24 @@ int reliefPyramidRunLevel(ReliefGridRay grid)
   return int(ceil(log2(max(run, 1.0f))));
 }
 
+// The corner past node `node` of `level` in the tile whose first cell is `origin`: a span
+// on from the node's first cell, or the tile's edge for the last node of a row.
+vec2 reliefPyramidNodeEnd(vec2 node, int level, vec2 origin)
+{
+  float span = float(1 << level); // exact, unlike exp2 on some GPUs
+  vec2 levelSize = reliefPyramidSize(level);
+  vec2 size = RELIEF_DEPTH_SIZE;
+  return vec2(node.x >= levelSize.x - 1.0f ? origin.x + size.x : origin.x + (node.x + 1.0f) * span,
+    node.y >= levelSize.y - 1.0f ? origin.y + size.y : origin.y + (node.y + 1.0f) * span);
+}
+
+// Where the ray leaves the cells [low, high), across x and across y.
+vec2 reliefBoxExits(ReliefGridRay grid, vec2 low, vec2 high, vec2 signs, vec2 inverseRun)
+{
+  return reliefCrossings(grid,
+    vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
+}
+
 vec2 reliefPyramidParent(vec2 node, int level)
 {
   vec2 parentSize = reliefPyramidSize(level + 1);
@@ -284,10 +302,8 @@ ReliefHit reliefSearchMaximumMipmap(ReliefRay ray, int linearSteps, int refineme
     vec2 levelSize = reliefPyramidSize(level);
     vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
     vec2 low = origin + node * span;
-    vec2 high = vec2(node.x >= levelSize.x - 1.0f ? origin.x + size.x : low.x + span,
-      node.y >= levelSize.y - 1.0f ? origin.y + size.y : low.y + span);
-    vec2 exits = reliefCrossings(
-      grid, vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
+    vec2 exits = reliefBoxExits(grid, low, reliefPyramidNodeEnd(node, level, origin), signs,
+      inverseRun);
     float tOut = min(exits.x, exits.y);
     samples += 1;
     // where the ray reaches the node's top: a ray that descends, by the node's far side,

@@ -57,6 +57,14 @@ vec4 reliefSlopeChildTops(float top, float codes)
   return tops;
 }
 
+// A child's top from its node's children's tops (reliefSlopeChildTops): `slot` is the
+// child's offset from the node's first child, 2 for the last node's folded third child.
+// Selects, where a variable index into a vector may go through memory.
+float reliefSlopeChildTop(vec4 tops, vec2 slot)
+{
+  return slot.y > 0.0f ? (slot.x > 0.0f ? tops.w : tops.z) : (slot.x > 0.0f ? tops.y : tops.x);
+}
+
 // The least and most rate of the gap along the ray (per unit of t) over a node whose
 // gradients lie in the box of `node`.
 vec2 reliefSlopeRates(vec4 node, ReliefGridRay grid)
@@ -219,10 +227,8 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
     vec2 levelSize = reliefPyramidSize(level);
     vec2 node = min(floor((cell - origin) / span), vec2(levelSize.x - 1.0f, levelSize.y - 1.0f));
     vec2 low = origin + node * span;
-    vec2 high = vec2(node.x >= levelSize.x - 1.0f ? origin.x + size.x : low.x + span,
-      node.y >= levelSize.y - 1.0f ? origin.y + size.y : low.y + span);
-    vec2 exits = reliefCrossings(grid,
-      vec2(signs.x > 0.0f ? high.x : low.x, signs.y > 0.0f ? high.y : low.y), signs, inverseRun);
+    vec2 high = reliefPyramidNodeEnd(node, level, origin);
+    vec2 exits = reliefBoxExits(grid, low, high, signs, inverseRun);
     float tOut = min(max(min(exits.x, exits.y), t), 1.0f);
     float zOut = grid.depth + tOut * grid.descent;
     bool over = false;
@@ -231,8 +237,7 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
       reliefPyramidParent(node, level) == heldNode)
     {
       // the parent's texel in hand: the node's top, and the parent's Lipschitz bound
-      vec2 slot = min(node - 2.0f * heldNode, vec2(1.0f, 1.0f));
-      float top = heldTops[int(slot.x + 2.0f * slot.y)];
+      float top = reliefSlopeChildTop(heldTops, node - 2.0f * heldNode);
       float bound = gapLow + heldRates.x * (tOut - t);
       over = zOut < top || bound > 0.0f;
       nextLow = max(max(top - zOut, bound), 0.0f);
@@ -269,8 +274,7 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
       {
         // (d): a gap that only falls and is still open at the exit was open all along:
         // the exit's child says so when the ray clears its top there, else its cell
-        vec2 slot = min(floor((exitCell - low) / (0.5f * span)), vec2(1.0f, 1.0f));
-        float exitTop = heldTops[int(slot.x + 2.0f * slot.y)];
+        float exitTop = reliefSlopeChildTop(heldTops, floor((exitCell - low) / (0.5f * span)));
         over = zOut < exitTop;
         nextLow = max(exitTop - zOut, nextLow);
       }
