@@ -15,7 +15,7 @@
  * bound), or that it only falls, so the ray meets the field at most once there.
  *
  * Each node above level 0 also holds the least depths of its four children, coded
- * relative to its own (ChildTopCodes): a search holding a node's texel knows its
+ * relative to its own (EncodeChildTops): a search holding a node's texel knows its
  * children's tops without reading them, and passes over the ones the ray clears.
  *
  * Output: one VTK_FLOAT image, scalars "TopAndSlopes", of the atlas size of

@@ -95,7 +95,8 @@ TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
 TEST_F(ReliefSlopeMipmap, ChildTopsInHandSaveReads)
 {
   // the same rays with every child's top coded as its parent's (the codes' zero): the
-  // search must then read each child it enters, and stays exact
+  // search must then read each child it enters that the parent's Lipschitz bound does
+  // not clear, and finds the same hits
   const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
     [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
   CurrentField = &terrain.Field;
