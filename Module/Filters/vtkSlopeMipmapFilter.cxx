@@ -120,8 +120,8 @@ void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArr
     }
   });
 
-  // each node's children's tops by slot, gathered as its children are taken in (the
-  // reduction runs node by node), then coded against the node's own
+  // each node's children's tops by slot, gathered as its children are taken in, then
+  // coded against the node's own (ReduceLevels visits nodes one at a time, in order)
   double childTops[4] = { 0.0, 0.0, 0.0, 0.0 };
   bool filled[4] = { false, false, false, false };
   ReduceLevels(
@@ -136,7 +136,8 @@ void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArr
       filled[slot] = true;
     },
     [&](float* node) {
-      // a slot no child fills (an axis of one node) is never asked for: the node's top
+      // a slot no child fills (an axis with a single child) holds the node's own top,
+      // which proves nothing more; the search asks for it only at such a node's far side
       for (int k = 0; k < 4; ++k)
       {
         childTops[k] = filled[k] ? childTops[k] : node[0];

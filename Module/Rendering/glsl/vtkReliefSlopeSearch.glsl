@@ -14,8 +14,8 @@
 // children's tops: while it is in hand, a child the ray clears (by its top, or by the parent's
 // Lipschitz bound) is passed over without a read, so a read buys two levels' worth of tests.
 // Single cells are solved as ExactDDA does. A bracket [above, below] holding one crossing is
-// closed by reading cells where Newton's, the secant's or, with the gap and its rate known at
-// both ends, a cubic Hermite interpolant's root puts it, within what the rates allow, each read
+// closed by reading cells where Newton's estimate or, with the gap and its rate known at both
+// ends, a cubic Hermite interpolant's root puts it, within what the rates allow, each read
 // solving the whole cell: with one crossing, the first zero of a cell entered above the field
 // is it. Exact: every skip is proven, every hit solved from a point known above the field.
 // Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
@@ -41,25 +41,28 @@ vec2 reliefSlopeDecode(float codes)
 
 // The least depths of a node's four children (slot x + 2 y) from the node's own, `top`, and
 // their codes (vtkSlopeMipmapFilter::EncodeChildTops): each at most the child's.
+// Integer parts are taken by multiplying with exact powers of two, never dividing (a GPU's
+// division may land just below an integer).
 vec4 reliefSlopeChildTops(float top, float codes)
 {
-  float exponent = floor(codes / 1048576.0f);
+  float exponent = floor(codes * (1.0f / 1048576.0f));
   float rest = codes - exponent * 1048576.0f;
-  float step = 1.0f / float(1 << (int(exponent) + 4)); // exact, unlike exp2 on some GPUs
+  float unit = 1.0f / float(1 << (int(exponent) + 4)); // within the encoder's margin
   vec4 tops;
-  float higher = floor(rest / 32.0f);
-  tops.x = top + (rest - 32.0f * higher) * step;
-  rest = floor(higher / 32.0f);
-  tops.y = top + (higher - 32.0f * rest) * step;
-  higher = floor(rest / 32.0f);
-  tops.z = top + (rest - 32.0f * higher) * step;
-  tops.w = top + higher * step;
+  float higher = floor(rest * (1.0f / 32.0f));
+  tops.x = top + (rest - 32.0f * higher) * unit;
+  rest = floor(higher * (1.0f / 32.0f));
+  tops.y = top + (higher - 32.0f * rest) * unit;
+  higher = floor(rest * (1.0f / 32.0f));
+  tops.z = top + (rest - 32.0f * higher) * unit;
+  tops.w = top + higher * unit;
   return tops;
 }
 
 // A child's top from its node's children's tops (reliefSlopeChildTops): `slot` is the
-// child's offset from the node's first child, 2 for the last node's folded third child.
-// Selects, where a variable index into a vector may go through memory.
+// child's offset from the node's first child, more than 1 in the last node's folded third
+// child (or where an axis of one node has a single child: its slot holds the node's own
+// top). Selects, where a variable index into a vector may go through memory.
 float reliefSlopeChildTop(vec4 tops, vec2 slot)
 {
   return slot.y > 0.0f ? (slot.x > 0.0f ? tops.w : tops.z) : (slot.x > 0.0f ? tops.y : tops.x);
@@ -268,28 +271,27 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
       float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
       over = zOut < texel.x || rates.x >= 0.0f || bound > 0.0f;
       nextLow = max(max(texel.x - zOut, bound), 0.0f);
-      // the node's cell at the exit, whatever side of the border rounding puts it
-      vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
       if (!over && rates.y < 0.0f)
       {
         // (d): a gap that only falls and is still open at the exit was open all along:
-        // the exit's child says so when the ray clears its top there, else its cell
+        // the exit's child says so when the ray clears its top there, else the exit's
+        // cell, the node's whatever side of the border rounding puts the exit
+        vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
         float exitTop = reliefSlopeChildTop(heldTops, floor((exitCell - low) / (0.5f * span)));
         over = zOut < exitTop;
         nextLow = max(exitTop - zOut, nextLow);
-      }
-      if (!over && rates.y < 0.0f)
-      {
-        // the exit's cell says whether the one crossing is in the node
-        samples += 1;
-        vec4 exitDepths = RELIEF_CELL_DEPTHS(exitCell);
-        float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
-        if (gapOut <= 0.0f)
+        if (!over)
         {
-          return reliefSlopeBracket(ray, grid, t, tOut, exitCell, exitDepths, rates, samples);
+          samples += 1;
+          vec4 exitDepths = RELIEF_CELL_DEPTHS(exitCell);
+          float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
+          if (gapOut <= 0.0f)
+          {
+            return reliefSlopeBracket(ray, grid, t, tOut, exitCell, exitDepths, rates, samples);
+          }
+          over = true;
+          nextLow = gapOut;
         }
-        over = true;
-        nextLow = gapOut;
       }
       if (!over)
       {
