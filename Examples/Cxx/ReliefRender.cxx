@@ -59,6 +59,7 @@ struct Options
   bool DepthConvention = false;
   int SearchMethod = vtkOpenGLReliefMapper::AUTOMATIC;
   double ScreenTolerance = 0.5;
+  int AutomaticAcceleration = vtkOpenGLReliefMapper::CONE_STEP;
   int LinearSteps = 10;
   int BinarySteps = 5;
   double SafetyTolerance = 0.0;
@@ -106,6 +107,9 @@ void PrintUsage(std::ostream& os)
         "                       ray search method (default: automatic)\n"
         "  --screen-tolerance P pixels the automatic search may leave out, 0 to 100\n"
         "                       (default: 0.5; 0: exact everywhere)\n"
+        "  --automatic-acceleration cone-step|slope-mipmap\n"
+        "                       what the automatic search steps long runs over\n"
+        "                       (default: cone-step; slope-mipmap: fewer samples, more memory)\n"
         "  --linear-steps N     linear search steps, 1 to 512 (default: "
      << defaults.LinearSteps
      << ")\n"
@@ -228,6 +232,12 @@ ParseResult ParseArguments(int argc, char* argv[], Options& options, std::string
       [&options](const std::string& value) {
         return ParseNumber(value, options.ScreenTolerance) && options.ScreenTolerance >= 0.0 &&
           options.ScreenTolerance <= 100.0;
+      } },
+    { "--automatic-acceleration",
+      [&options](const std::string& value) {
+        options.AutomaticAcceleration = ReliefScene::SearchMethodNamed(value);
+        return options.AutomaticAcceleration == vtkOpenGLReliefMapper::CONE_STEP ||
+          options.AutomaticAcceleration == vtkOpenGLReliefMapper::SLOPE_MIPMAP;
       } },
     { "--linear-steps", integerIn(options.LinearSteps, 1, 512) },
     { "--binary-steps", integerIn(options.BinarySteps, 0, 32) },
@@ -553,6 +563,7 @@ int main(int argc, char* argv[])
   }
   mapper->SetSearchMethod(options.SearchMethod);
   mapper->SetScreenTolerance(options.ScreenTolerance);
+  mapper->SetAutomaticAcceleration(options.AutomaticAcceleration);
   mapper->SetLinearSteps(options.LinearSteps);
   mapper->SetBinarySteps(options.BinarySteps);
   mapper->SetSafetyRadiusTolerance(options.SafetyTolerance);

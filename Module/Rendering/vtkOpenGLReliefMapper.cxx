@@ -166,7 +166,28 @@ const vtkReliefSearchMethod& vtkOpenGLReliefMapper::GetActiveSearch()
 
 const vtkReliefSearchMethod* vtkOpenGLReliefMapper::DescribeSearch(int method)
 {
-  return vtkReliefSearchMethod::Get(method);
+  return method == AUTOMATIC ? vtkReliefSearchMethod::GetAutomatic(this->AutomaticAcceleration)
+                             : vtkReliefSearchMethod::Get(method);
+}
+
+void vtkOpenGLReliefMapper::SetAutomaticAcceleration(int method)
+{
+  if (!vtkReliefSearchMethod::GetAutomatic(method))
+  {
+    const char* name = GetSearchMethodAsString(method);
+    vtkErrorMacro("AutomaticAcceleration " << (name ? name : std::to_string(method))
+                                           << " is neither ConeStep nor SlopeMipmap; keeping "
+                                           << this->GetAutomaticAccelerationAsString()
+                                           << ". Use SetAutomaticAccelerationTo...().");
+    return;
+  }
+  if (method != this->AutomaticAcceleration)
+  {
+    this->AutomaticAcceleration = method;
+    this->WarnedAccelerationFallback = false;
+    this->ModifiedShaderOptions();
+    this->ShaderOptionsTime.Modified();
+  }
 }
 
 void vtkOpenGLReliefMapper::SetLinearSteps(int steps)
@@ -336,6 +357,7 @@ void vtkOpenGLReliefMapper::CopyReliefSettings(vtkOpenGLReliefMapper* source)
     return;
   }
   this->SetSearchMethod(source->SearchMethod);
+  this->SetAutomaticAcceleration(source->AutomaticAcceleration);
   this->SetScreenTolerance(source->ScreenTolerance);
   this->SetLinearSteps(source->LinearSteps);
   this->SetBinarySteps(source->BinarySteps);
@@ -1036,6 +1058,7 @@ void vtkOpenGLReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SearchMethod: " << this->GetSearchMethodAsString() << "\n";
+  os << indent << "AutomaticAcceleration: " << this->GetAutomaticAccelerationAsString() << "\n";
   os << indent << "ScreenTolerance: " << this->ScreenTolerance << " pixels\n";
   os << indent << "ActiveSearchMethod: " << GetSearchMethodAsString(this->ActiveSearchMethod)
      << "\n";

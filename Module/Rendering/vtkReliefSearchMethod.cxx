@@ -81,6 +81,11 @@ const vtkReliefSearchMethod AutomaticOnCurvedRays = { vtkOpenGLReliefMapper::AUT
   "Automatic", "reliefSearchAutomaticCurved", true, Method::NO_ACCELERATION, nullptr, nullptr,
   nullptr };
 
+// Automatic whose long straight runs step over the slope pyramid: SlopeMipmap's image.
+const vtkReliefSearchMethod AutomaticOverSlopes = { vtkOpenGLReliefMapper::AUTOMATIC,
+  "Automatic", "reliefSearchAutomaticOverSlopes", false, Method::SLOPE_CODES,
+  &NewFilter<vtkSlopeMipmapFilter>, nullptr, &SetPyramidUniforms };
+
 std::string Squeezed(const std::string& name)
 {
   std::string squeezed;
@@ -108,6 +113,19 @@ const vtkReliefSearchMethod* vtkReliefSearchMethod::GetForCurvedRays(int id)
   }
   const vtkReliefSearchMethod* method = Get(id);
   return method && method->FollowsCurvedRays ? method : nullptr;
+}
+
+const vtkReliefSearchMethod* vtkReliefSearchMethod::GetAutomatic(int acceleration)
+{
+  switch (acceleration)
+  {
+    case vtkOpenGLReliefMapper::CONE_STEP:
+      return Get(vtkOpenGLReliefMapper::AUTOMATIC);
+    case vtkOpenGLReliefMapper::SLOPE_MIPMAP:
+      return &AutomaticOverSlopes;
+    default:
+      return nullptr;
+  }
 }
 
 int vtkReliefSearchMethod::GetNumberOfMethods()

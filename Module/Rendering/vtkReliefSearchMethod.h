@@ -57,6 +57,12 @@ public:
    * image), or null where the method cannot search them.
    */
   static const vtkReliefSearchMethod* GetForCurvedRays(int id);
+  /**
+   * Automatic as it steps long straight runs over the image of `acceleration`: CONE_STEP's
+   * cone map (Get(AUTOMATIC) itself) or SLOPE_MIPMAP's pyramid
+   * (vtkOpenGLReliefMapper::AutomaticAcceleration); null for any other method.
+   */
+  static const vtkReliefSearchMethod* GetAutomatic(int acceleration);
   /// Methods in order of Id, from 0.
   static int GetNumberOfMethods();
   /// The method named `name` (Name, any case, dashes ignored), or null.

@@ -271,6 +271,8 @@ std::vector<Setting> Settings()
     label << pixels << " pixel" << (pixels == 1.0 ? "" : "s");
     settings.push_back({ "Automatic", label.str(), Mapper::AUTOMATIC, 10, 5, 0.0, pixels });
   }
+  settings.push_back(
+    { "Automatic", "0.5 pixels, over slopes", Mapper::AUTOMATIC, 10, 5, 0.0, 0.5, true });
   return settings;
 }
 
@@ -281,6 +283,8 @@ void Apply(const Setting& setting, vtkOpenGLReliefMapper* mapper)
   mapper->SetBinarySteps(std::max(setting.BinarySteps, 1));
   mapper->SetSafetyRadiusTolerance(setting.Tolerance);
   mapper->SetScreenTolerance(setting.ScreenTolerance);
+  mapper->SetAutomaticAcceleration(setting.OverSlopes ? vtkOpenGLReliefMapper::SLOPE_MIPMAP
+                                                      : vtkOpenGLReliefMapper::CONE_STEP);
 }
 
 bool IsAutomatic(const Setting& setting)

@@ -24,9 +24,11 @@ struct Setting
   int BinarySteps = 5;
   double Tolerance = 0.0;       ///< SafetyRadius's error bound
   double ScreenTolerance = 0.5; ///< Automatic's, in pixels
+  bool OverSlopes = false;      ///< Automatic over SlopeMipmap's pyramid, not cones
 };
 
-/// Every fixed setting of every search method, then Automatic at 0.5 and 2 pixels.
+/// Every fixed setting of every search method, then Automatic at 0.5 and 2 pixels, and at
+/// 0.5 pixels over the slope pyramid.
 std::vector<Setting> Settings();
 
 /// Gives `mapper` the setting's method and parameters.

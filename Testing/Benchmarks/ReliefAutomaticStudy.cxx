@@ -199,7 +199,8 @@ std::string Report(const std::vector<Measurement>& measurements, const Options& 
 {
   std::ostringstream section;
   section << "Every setting of the accuracy chart and Automatic at ScreenTolerance 0.5 and 2 "
-             "pixels, on one tile of each height map over the unit square filling a "
+             "pixels (and 0.5 over the slope pyramid, AutomaticAcceleration SlopeMipmap), on "
+             "one tile of each height map over the unit square filling a "
           << options.Width << "x" << options.Height << " window, DepthScale "
           << options.DepthScale << ", the maps of Data/ resampled to " << options.HeightMapSize
           << "x" << options.HeightMapSize

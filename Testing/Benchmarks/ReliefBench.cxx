@@ -164,23 +164,29 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
   vtkOpenGLReliefMapper* relief, const std::vector<TableMap>& maps, int frames, int rounds)
 {
   // LinearBinary first: the others are measured against it; SafetyRadius and RobustBinary
-  // at e = 0 and at the tolerance that trades a silhouette error of 0.05 depth for speed
+  // at e = 0 and at the tolerance that trades a silhouette error of 0.05 depth for speed;
+  // Automatic over cones and over the slope pyramid
   struct Method
   {
     int Id;
     double Tolerance;
+    bool OverSlopes;
   };
-  std::vector<Method> methods = { { vtkOpenGLReliefMapper::LINEAR_BINARY, 0.0 } };
+  std::vector<Method> methods = { { vtkOpenGLReliefMapper::LINEAR_BINARY, 0.0, false } };
   for (int method : ReliefScene::SearchMethods())
   {
     if (method != vtkOpenGLReliefMapper::LINEAR_BINARY)
     {
-      methods.push_back({ method, 0.0 });
+      methods.push_back({ method, 0.0, false });
     }
     if (method == vtkOpenGLReliefMapper::SAFETY_RADIUS ||
       method == vtkOpenGLReliefMapper::ROBUST_BINARY)
     {
-      methods.push_back({ method, 0.05 });
+      methods.push_back({ method, 0.05, false });
+    }
+    if (method == vtkOpenGLReliefMapper::AUTOMATIC)
+    {
+      methods.push_back({ method, 0.0, true });
     }
   }
   std::ostringstream table;
@@ -206,6 +212,9 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
         {
           relief->SetSearchMethod(methods[m].Id);
           relief->SetSafetyRadiusTolerance(methods[m].Tolerance);
+          relief->SetAutomaticAcceleration(methods[m].OverSlopes
+              ? vtkOpenGLReliefMapper::SLOPE_MIPMAP
+              : vtkOpenGLReliefMapper::CONE_STEP);
           if (round == 0)
           {
             samples[m] = ReliefScene::SampleCounts(window, renderer, relief);
@@ -224,6 +233,10 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
         {
           table << " (e = " << methods[m].Tolerance << ")";
         }
+        if (methods[m].OverSlopes)
+        {
+          table << " (over SlopeMipmap)";
+        }
         table << " | " << median
               << " | " << median / baseMilliseconds << " | " << samples[m].Mean << " | "
               << samples[m].Mean / samples[0].Mean << " | "
@@ -236,6 +249,7 @@ std::string MethodsTable(vtkRenderWindow* window, vtkRenderer* renderer,
   relief->SetHeightMapData(ReliefScene::ReadImage("bricks_height.png"));
   relief->SetSearchMethodToLinearBinary();
   relief->SetSafetyRadiusTolerance(0.0);
+  relief->SetAutomaticAccelerationToConeStep();
   ViewSquareFilling(renderer, 45.0);
   return table.str();
 }
@@ -459,10 +473,15 @@ int main(int argc, char* argv[])
     }
   }
 
-  if (!only.empty() && !report.empty())
+  auto wanted = [&](const std::string& section) {
+    return only.empty() || ("," + only + ",").find("," + section + ",") != std::string::npos;
+  };
+  if (!report.empty() &&
+    !(wanted("plain") && wanted("methods") && wanted("filters") && wanted("sharing")))
   {
-    std::cerr << "relief bench: --report writes every timing table; run it without --only "
-                 "(--results may go with --only accuracy,sweeps,quadric,derivative).\n";
+    std::cerr << "relief bench: --report writes every timing table; run it without --only, "
+                 "or with --only plain,methods,filters,sharing (--results may go with any "
+                 "--only).\n";
     return 2;
   }
   if (quick)
@@ -498,9 +517,6 @@ int main(int argc, char* argv[])
     { "Automatic", vtkOpenGLReliefMapper::AUTOMATIC, 10, 5, true, false },
     { "Automatic, footprint shading (the defaults)", vtkOpenGLReliefMapper::AUTOMATIC, 10, 5,
       true, true },
-  };
-  auto wanted = [&](const std::string& section) {
-    return only.empty() || ("," + only + ",").find("," + section + ",") != std::string::npos;
   };
   double coverage = 0.0;
   for (int round = 0; round < rounds && wanted("plain"); ++round)
@@ -792,7 +808,12 @@ int main(int argc, char* argv[])
   {
     std::ofstream out(report);
     out << "# Benchmark: relief mapping against plain texturing\n\n"
-        << "Produced by `./relief bench --report " << report << "`.\n\n"
+        << "Produced by `./relief bench" << (only.empty() ? "" : " --only " + only);
+    for (const std::string& map : maps)
+    {
+      out << " --map " << map;
+    }
+    out << " --report " << report << "`.\n\n"
         << context.str() << "\n" << table.str() << "\n## Search methods\n\n"
         << methodsContext << methodsTable << "\n## Acceleration filters\n\n" << filtersContext
         << filtersTable << "\n## Many actors on one height map\n\n" << sharingContext

@@ -8,8 +8,9 @@
 // acceleration image, search selection, depth correction) against code that is proven
 // exact by the unit tests.
 //
-// Every method of vtkReliefSearchMethod is compared: the mirror's search of the method's
-// GLSL function (ReliefCpuMirror::FindSearch), and the map PrepareMaps makes for it; and
+// Every method of vtkReliefSearchMethod is compared, Automatic over each acceleration it
+// may read: the mirror's search of the method's GLSL function (ReliefCpuMirror::FindSearch),
+// and the map PrepareMaps makes for it; and
 // vtkOpenGLPathFeatureMapper's path walk, on its filter's textures, on a flat base and on
 // a relief base. No baseline image:
 // the depth buffer is checked against the mirror, not against a picture.
@@ -44,6 +45,7 @@
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -122,26 +124,27 @@ struct Maps
   mirror::SafetyRadiusMap Radii;
 };
 
-void PrepareMaps(const std::string& method, vtkOpenGLReliefMapper* mapper, Maps& maps)
+void PrepareMaps(const vtkReliefSearchMethod& method, vtkOpenGLReliefMapper* mapper, Maps& maps)
 {
+  const int kind = method.GetAccelerationKind();
   // the mapper's filter, fed at the render, makes what the GPU was given
   vtkReliefTextureFilter* relief = mapper->GetReliefTextureFilter();
   relief->Update();
   maps.Field = mirror::FieldOf(relief->GetOutput());
   mirror::CurrentField = &maps.Field;
-  if (method == "MaximumMipmap" || method == "SlopeMipmap")
+  if (kind == vtkOpenGLReliefMapper::MAXIMUM_MIPMAP || kind == vtkOpenGLReliefMapper::SLOPE_MIPMAP)
   {
     maps.Pyramid = mirror::PyramidOf(maps.Field);
     mirror::CurrentPyramid = &maps.Pyramid;
     maps.Slopes = mirror::SlopesOf(maps.Field);
     mirror::CurrentSlopes = &maps.Slopes;
   }
-  else if (method == "ConeStep" || method == "Automatic")
+  else if (kind == vtkOpenGLReliefMapper::CONE_STEP)
   {
     maps.Cones = mirror::ConeMapOf(maps.Field);
     mirror::CurrentConeMap = &maps.Cones;
   }
-  else if (method == "SafetyRadius" || method == "RobustBinary")
+  else if (kind == vtkOpenGLReliefMapper::SAFETY_RADIUS)
   {
     maps.Radii = mirror::RadiiOf(maps.Field, mapper->GetSafetyRadiusTolerance());
     mirror::CurrentRadii = &maps.Radii;
@@ -312,7 +315,7 @@ Comparison Compare(double tiles, const std::string& method, mirror::Search searc
       const mirror::ReliefFrame frame = mirror::reliefTangentFrame(
         mirror::reliefTangentBasis(vertex.normal, vertex.tangent, vertex.textureScale, true));
       mirror::ReliefRay ray = mirror::reliefFrameViewRay(frame, pixel);
-      if (method == "Automatic")
+      if (method.rfind("Automatic", 0) == 0)
       {
         // the entry's change to the next pixels: the Automatic search's budget
         Fragment alongX;
@@ -421,7 +424,7 @@ bool ComparePathFeatures(vtkRenderWindow* window, vtkRenderer* renderer, const V
   glm::vec2 size{ float(cells[0]), float(cells[1]) };
   if (onRelief)
   {
-    PrepareMaps("ExactDDA", mapper, *onRelief);
+    PrepareMaps(*vtkReliefSearchMethod::Get(vtkOpenGLReliefMapper::EXACT_DDA), mapper, *onRelief);
     size = glm::vec2(float(onRelief->Field.Width), float(onRelief->Field.Height));
   }
   const std::string method = onRelief ? "PathsOnRelief" : "PathFeatures";
@@ -468,16 +471,33 @@ int TestReliefGpuMatchesCpu(int, char*[])
     renderer->RemoveAllViewProps();
     renderer->AddActor(actor);
     std::cout << scene.Name << ":\n";
+    // every method, and Automatic over each acceleration it may read
+    std::vector<std::pair<int, int>> searches; // method, AutomaticAcceleration
     for (int id : ReliefScene::SearchMethods())
     {
-      const std::string method = vtkOpenGLReliefMapper::GetSearchMethodAsString(id);
-      if (!mirror::FindSearch(vtkReliefSearchMethod::Get(id)->Function))
+      searches.emplace_back(id, vtkOpenGLReliefMapper::CONE_STEP);
+      if (id == vtkOpenGLReliefMapper::AUTOMATIC)
+      {
+        searches.emplace_back(id, vtkOpenGLReliefMapper::SLOPE_MIPMAP);
+      }
+    }
+    for (const auto& [id, acceleration] : searches)
+    {
+      const bool automatic = id == vtkOpenGLReliefMapper::AUTOMATIC;
+      const vtkReliefSearchMethod& description = automatic
+        ? *vtkReliefSearchMethod::GetAutomatic(acceleration)
+        : *vtkReliefSearchMethod::Get(id);
+      const std::string method = vtkOpenGLReliefMapper::GetSearchMethodAsString(id) +
+        (automatic ? std::string(" over ") + vtkOpenGLReliefMapper::GetSearchMethodAsString(acceleration)
+                   : std::string());
+      if (!mirror::FindSearch(description.Function))
       {
         std::cerr << "ERROR: " << method << " has no search in the CPU mirror\n";
         ++failures;
         continue;
       }
       mapper->SetSearchMethod(id);
+      mapper->SetAutomaticAcceleration(acceleration);
       window->Render();
       if (mapper->GetActiveSearchMethod() != id)
       {
@@ -488,10 +508,10 @@ int TestReliefGpuMatchesCpu(int, char*[])
         continue;
       }
       window->GetZbufferData(0, 0, Width - 1, Height - 1, zbuffer.data());
-      PrepareMaps(method, mapper, maps);
+      PrepareMaps(description, mapper, maps);
       const mirror::ReliefTangentVertex vertex = SquareBasis(view, mapper->GetReliefSurface());
       const Comparison result = Compare(scene.Tiles, method,
-        mirror::FindSearch(vtkReliefSearchMethod::Get(id)->Function),
+        mirror::FindSearch(description.Function),
         glm::vec2(float(maps.Field.Width), float(maps.Field.Height)), mapper, view, vertex,
         zbuffer);
       failures += Report(scene.Name, method, result) ? 0 : 1;

@@ -1,5 +1,6 @@
 // The search method property: every method by name, unknown ones refused; switching
-// methods back and forth leaks no shader programs or textures; an acceleration image
+// methods back and forth leaks no shader programs or textures; Automatic steps over the
+// acceleration AutomaticAcceleration names, and no other; an acceleration image
 // that does not fit is reported once and the search falls back to LinearBinary; a
 // height map larger than OpenGL takes is reported with the limit.
 #include "ReliefChecks.h"
@@ -107,6 +108,51 @@ int TestReliefSearchMethods(int, char*[])
     }
     check(actual == expected, "each method samples as it does alone");
   }
+
+  // Automatic over the slope pyramid: its own samples, as a new mapper's; refused for any
+  // other method; switching back and forth leaks nothing
+  check(mapper->GetAutomaticAcceleration() == vtkOpenGLReliefMapper::CONE_STEP,
+    "Automatic steps over cones by default");
+  mapper->SetSearchMethodToAutomatic();
+  const long overCones = RedSum(window);
+  mapper->SetAutomaticAccelerationToSlopeMipmap();
+  check(std::strcmp(mapper->GetAutomaticAccelerationAsString(), "SlopeMipmap") == 0,
+    "AutomaticAcceleration's name");
+  const long overSlopes = RedSum(window);
+  vtkNew<vtkRenderWindow> alone;
+  auto fresh =
+    ReliefScene::ShowThinFeatures(alone, 160, 120, 60.0, vtkOpenGLReliefMapper::AUTOMATIC);
+  fresh->SetDisplayModeToSampleCount();
+  fresh->SetAutomaticAccelerationToSlopeMipmap();
+  std::cout << "Automatic's red sum over cones " << overCones << ", over slopes " << overSlopes
+            << " (alone " << RedSum(alone) << ")\n";
+  check(overSlopes != overCones && overSlopes == RedSum(alone),
+    "Automatic over slopes samples as it does alone, unlike over cones");
+  mapper->SetAutomaticAcceleration(vtkOpenGLReliefMapper::MAXIMUM_MIPMAP);
+  check(messages->Count(vtkCommand::ErrorEvent) == 1 &&
+      messages->AnyMessageContains("neither ConeStep nor SlopeMipmap") &&
+      mapper->GetAutomaticAcceleration() == vtkOpenGLReliefMapper::SLOPE_MIPMAP,
+    "another acceleration for Automatic is an error and changes nothing");
+  messages->Clear();
+  // a render makes the window's context current again, for the counts
+  check(RedSum(window) == overSlopes, "the refused value left Automatic over slopes");
+  const int automaticPrograms = ReliefLiveGLObjects::Programs();
+  const int automaticTextures = ReliefLiveGLObjects::Textures();
+  for (int round = 0; round < 5; ++round)
+  {
+    mapper->SetAutomaticAccelerationToConeStep();
+    RedSum(window);
+    mapper->SetAutomaticAccelerationToSlopeMipmap();
+    RedSum(window);
+  }
+  std::cout << "GL programs " << automaticPrograms << " -> " << ReliefLiveGLObjects::Programs()
+            << ", textures " << automaticTextures << " -> " << ReliefLiveGLObjects::Textures()
+            << ", messages " << messages->Events.size() << "\n";
+  check(ReliefLiveGLObjects::Programs() == automaticPrograms &&
+      ReliefLiveGLObjects::Textures() == automaticTextures && messages->Events.empty(),
+    "switching Automatic's acceleration leaks nothing, silently");
+  check(RedSum(window) == overSlopes, "and samples as before after");
+  mapper->SetAutomaticAccelerationToConeStep();
   mapper->SetDisplayModeToShaded();
 
   // a precomputed image, made in the pipeline from the mapper's relief texture, is used as

@@ -9,7 +9,8 @@
   selection in the view passes (ParaView names its id arrays on every representation);
 - a height map from a pipeline's image source (a Texture proxy fed by Wavelet);
 - the other frames and an exact search draw the relief too, without messages;
-- Robust Binary's Safety Radius Tolerance reaches the mapper.
+- Robust Binary's Safety Radius Tolerance reaches the mapper, and so does Automatic
+  Acceleration.
 
   pvpython TestReliefParaViewPython.py PLUGIN DATA BASELINE OUTPUT_DIR
 """
@@ -84,6 +85,7 @@ for data_source in (scene.tiled_plane(), CleantoGrid(Input=scene.tiled_plane()))
     check(shown.ReliefFrame == "Tangent", "the tangent frame by default")
     check(shown.ReliefSelfShadowing == 1, "self-shadowing by default")
     check(shown.ReliefScreenTolerance == 0.5, "half a pixel by default")
+    check(shown.ReliefAutomaticAcceleration == "Cone Step", "over cones by default")
     Hide(data_source, view)
 
 # no height map: the plain surface, one warning naming the property
@@ -145,6 +147,19 @@ check(images.differing_pixels(robust[0.0], relief, 32) < 0.05,
 loose = images.differing_pixels(robust[1.0], robust[0.0], 8)
 print("Robust Binary: %.3f%% of pixels change from e = 0 to e = 1" % (100 * loose))
 check(loose > 0.01, "Safety Radius Tolerance reaches the mapper")
+
+# Automatic over the slope pyramid: its hits end elsewhere within the tolerance, which
+# moves some pixels (1.0% by more than 8 on this scene drawn by the mapper in VTK), and
+# draws the relief
+display.ReliefAutomaticAcceleration = "Slope Mipmap"
+Render(view)
+slopes = screenshot(view, "TestReliefParaViewPythonAutomaticOverSlopes")
+display.ReliefAutomaticAcceleration = "Cone Step"
+check(not messages, "Automatic over Slope Mipmap draws without messages: %s" % messages)
+moved = images.differing_pixels(slopes, relief, 8)
+print("Automatic over Slope Mipmap: %.3f%% of pixels differ by more than 8" % (100 * moved))
+check(moved > 0.002, "Automatic Acceleration reaches the mapper")
+check(images.differing_pixels(slopes, relief, 32) < 0.01, "and draws the relief")
 
 if failures:
     sys.exit(1)

@@ -269,6 +269,7 @@ inline Search FindSearch(const std::string& function)
     RELIEF_MIRROR_SEARCH(reliefSearchConeStep),
     RELIEF_MIRROR_SEARCH(reliefSearchMaximumMipmap),
     RELIEF_MIRROR_SEARCH(reliefSearchAutomatic),
+    RELIEF_MIRROR_SEARCH(reliefSearchAutomaticOverSlopes),
     RELIEF_MIRROR_SEARCH(reliefSearchAutomaticCurved),
     RELIEF_MIRROR_SEARCH(reliefSearchRobustBinary),
     RELIEF_MIRROR_SEARCH(reliefSearchSlopeMipmap),

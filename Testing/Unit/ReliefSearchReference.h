@@ -210,8 +210,8 @@ void ExpectGrazingHits(const std::vector<Scene>& scenes, const char* method, Sea
   }
 }
 
-// Every scene with its cone map, made once per test suite: the fixture of the searches
-// that read cones (ConeStep, Automatic).
+// Every scene with its cone map and slope pyramid, made once per test suite: the fixture
+// of the searches that read cones (ConeStep, Automatic over either).
 class ReliefConeScenes : public ::testing::Test
 {
 protected:
@@ -219,17 +219,21 @@ protected:
   {
     AllScenes = new std::vector<Scene>(Scenes());
     ConeMaps = new std::vector<ConeStepMap>();
+    SlopeMaps = new std::vector<SlopePyramid>();
     for (const Scene& scene : *AllScenes)
     {
       ConeMaps->push_back(ConeMapOf(scene.Field));
+      SlopeMaps->push_back(SlopesOf(scene.Field));
     }
   }
   static void TearDownTestSuite()
   {
     delete AllScenes;
     delete ConeMaps;
+    delete SlopeMaps;
     AllScenes = nullptr;
     ConeMaps = nullptr;
+    SlopeMaps = nullptr;
   }
   static size_t Find(const std::string& name)
   {
@@ -248,9 +252,11 @@ protected:
     CurrentField = &(*AllScenes)[scene].Field;
     CurrentPyramid = &(*AllScenes)[scene].Pyramid;
     CurrentConeMap = &(*ConeMaps)[scene];
+    CurrentSlopes = &(*SlopeMaps)[scene];
   }
   static inline std::vector<Scene>* AllScenes = nullptr;
   static inline std::vector<ConeStepMap>* ConeMaps = nullptr;
+  static inline std::vector<SlopePyramid>* SlopeMaps = nullptr;
 };
 }
 

@@ -1,9 +1,9 @@
 // The Automatic search of vtkReliefAutomaticSearch.glsl, run on the CPU through the
 // very source the GPU compiles, against the brute-force reference of
 // ReliefSearchReference.h: exact where the screen run is unknown, within the screen
-// tolerance at every run (the bound that keeps its regimes from popping), each regime
-// where its costs say, and the curved variant within the tolerance on straight and
-// curved rays.
+// tolerance at every run (the bound that keeps its regimes from popping), over either
+// acceleration (AutomaticAcceleration), each regime where its costs say, and the curved
+// variant within the tolerance on straight and curved rays.
 #include "ReliefSearchReference.h"
 
 #include <limits>
@@ -16,6 +16,15 @@ using namespace ReliefCpuMirror;
 class ReliefAutomaticSearch : public ReliefConeScenes
 {
 };
+
+// Automatic over each acceleration its long straight runs may step over.
+struct Acceleration
+{
+  const char* Name;
+  ReliefHit (*Search)(ReliefRay ray, int linearSteps, int refinementSteps);
+};
+const Acceleration Accelerations[] = { { "Automatic over cones", reliefSearchAutomatic },
+  { "Automatic over slopes", reliefSearchAutomaticOverSlopes } };
 
 // The ray with its run on screen: `tolerances` screen tolerances from t = 0 to 1.
 ReliefRay WithScreenRun(ReliefRay ray, float tolerances)
@@ -55,10 +64,13 @@ TEST(ReliefScreenRun, SolvesForThePixelOffsetOfTheRun)
 
 TEST_F(ReliefAutomaticSearch, IsExactWhereTheScreenRunIsNotKnown)
 {
-  size_t k = 0;
-  ExpectExact(*AllScenes, "Automatic",
-    [](const ReliefRay& ray) { return reliefSearchAutomatic(ray, 0, 0); }, Tolerance,
-    [&k](const Scene&) { Use(k++); });
+  for (const Acceleration& over : Accelerations)
+  {
+    size_t k = 0;
+    ExpectExact(*AllScenes, over.Name,
+      [&over](const ReliefRay& ray) { return over.Search(ray, 0, 0); }, Tolerance,
+      [&k](const Scene&) { Use(k++); });
+  }
 }
 
 TEST_F(ReliefAutomaticSearch, KeepsEveryHitWithinTheToleranceAtEveryScreenRun)
@@ -69,24 +81,29 @@ TEST_F(ReliefAutomaticSearch, KeepsEveryHitWithinTheToleranceAtEveryScreenRun)
   for (size_t k = 0; k < AllScenes->size(); ++k)
   {
     Use(k);
-    for (float run : { 0.3f, 0.99f, 1.01f, 3.0f, 40.0f })
+    for (const Acceleration& over : Accelerations)
     {
-      int wrong = 0;
-      for (const ReliefRay& view : ViewRays(400 + unsigned(k), 0.1f))
+      for (float run : { 0.3f, 0.99f, 1.01f, 3.0f, 40.0f })
       {
-        if (Cells(view) > RELIEF_AUTOMATIC_CONE_CELLS)
+        int wrong = 0;
+        for (const ReliefRay& view : ViewRays(400 + unsigned(k), 0.1f))
         {
-          continue; // stepped in bounded cost (BoundsTheCostOfRaysThousandsOfCellsLong)
+          if (Cells(view) > RELIEF_AUTOMATIC_CONE_CELLS)
+          {
+            continue; // stepped in bounded cost (BoundsTheCostOfRaysThousandsOfCellsLong)
+          }
+          const ReliefRay ray = WithScreenRun(view, run);
+          const ReliefHit hit = over.Search(ray, 0, 0);
+          const double reference = ReferenceHit(*CurrentField, ray);
+          const double error = ScreenError(ray, hit.t, reference);
+          // beyond one tolerance also within 1/20 of the depth, for the depth it writes
+          const double depthError =
+            run > 1.0f ? std::abs(hit.t - reference) * ray.direction.z : 0.0;
+          wrong += hit.hit && error <= 1.0 + 1e-3 && depthError <= 0.05 + 1e-4 ? 0 : 1;
         }
-        const ReliefRay ray = WithScreenRun(view, run);
-        const ReliefHit hit = reliefSearchAutomatic(ray, 0, 0);
-        const double reference = ReferenceHit(*CurrentField, ray);
-        const double error = ScreenError(ray, hit.t, reference);
-        // beyond one tolerance also within 1/20 of the depth, for the depth it writes
-        const double depthError = run > 1.0f ? std::abs(hit.t - reference) * ray.direction.z : 0.0;
-        wrong += hit.hit && error <= 1.0 + 1e-3 && depthError <= 0.05 + 1e-4 ? 0 : 1;
+        EXPECT_EQ(wrong, 0) << over.Name << " on " << (*AllScenes)[k].Name
+                            << " at a screen run of " << run;
       }
-      EXPECT_EQ(wrong, 0) << (*AllScenes)[k].Name << " at a screen run of " << run;
     }
   }
 }
@@ -102,10 +119,45 @@ TEST_F(ReliefAutomaticSearch, SpendsLeastWhereTheReliefIsBelowTheToleranceAndWal
   const ReliefRay walked = WithScreenRun(steep, 10.0f);
   EXPECT_EQ(
     reliefSearchAutomatic(walked, 0, 0).samples, reliefSearchExactDDA(walked, 0, 0).samples);
-  // a long run: ConeStep, exact where the run is not known
+  // a long run: ConeStep, or SlopeMipmap, exact where the run is not known
   const ReliefRay stepped = WithScreenRun(oblique, RELIEF_UNKNOWN_RUN);
   const int coneSamples = reliefSearchConeStep(stepped, 0, 0).samples;
+  const int slopeSamples = reliefSearchSlopeMipmap(stepped, 0, 0).samples;
+  ASSERT_NE(coneSamples, slopeSamples); // so that each check below tells them apart
   EXPECT_EQ(reliefSearchAutomatic(stepped, 0, 0).samples, coneSamples);
+  EXPECT_EQ(reliefSearchAutomaticOverSlopes(stepped, 0, 0).samples, slopeSamples);
+}
+
+TEST_F(ReliefAutomaticSearch, OverSlopesTakesFewerSamplesThanOverCones)
+{
+  // long runs (4 to 40 tolerances) of grazing rays: the regime the acceleration serves
+  long cones = 0;
+  long slopes = 0;
+  for (size_t k = 0; k < AllScenes->size(); ++k)
+  {
+    Use(k);
+    long fieldCones = 0;
+    long fieldSlopes = 0;
+    for (const ReliefRay& view : ViewRays(700 + unsigned(k), 0.1f))
+    {
+      const vec2 cells = reliefRunTexels(view);
+      if (cells.x + cells.y <= RELIEF_AUTOMATIC_WALK_CELLS ||
+        cells.x + cells.y > RELIEF_AUTOMATIC_CONE_CELLS)
+      {
+        continue; // the other regimes, the same for both
+      }
+      for (float run : { 4.0f, 40.0f })
+      {
+        fieldCones += reliefSearchAutomatic(WithScreenRun(view, run), 0, 0).samples;
+        fieldSlopes += reliefSearchAutomaticOverSlopes(WithScreenRun(view, run), 0, 0).samples;
+      }
+    }
+    std::cout << (*AllScenes)[k].Name << ": samples, Automatic over slopes " << fieldSlopes
+              << ", over cones " << fieldCones << "\n";
+    cones += fieldCones;
+    slopes += fieldSlopes;
+  }
+  EXPECT_LT(slopes, cones);
 }
 
 TEST_F(ReliefAutomaticSearch, TakesNoMoreSamplesThanConeStepWhereBothAreExact)

@@ -3,6 +3,7 @@
 // function of the shared signature in the shader sources for each, the mirror's search
 // of that function, and an acceleration filter exactly where the method reads an image.
 #include "ReliefCpuMirror.h"
+#include "vtkOpenGLReliefMapper.h"
 #include "vtkReliefAccelerationFilter.h"
 #include "vtkReliefSearchMethod.h"
 #include "vtkSmartPointer.h"
@@ -90,5 +91,31 @@ TEST(ReliefSearchMethodTable, CurvedRaysGetTheMethodsThatFollowThemAndAutomatics
     EXPECT_NE(ReliefCpuMirror::FindSearch(curved->Function), nullptr);
   }
   EXPECT_EQ(vtkReliefSearchMethod::GetForCurvedRays(-1), nullptr);
+}
+
+TEST(ReliefSearchMethodTable, AutomaticStepsOverTheConeMapOrTheSlopePyramid)
+{
+  const std::string sources = ShaderSources();
+  const vtkReliefSearchMethod* automatic = vtkReliefSearchMethod::Get(vtkOpenGLReliefMapper::AUTOMATIC);
+  const vtkReliefSearchMethod* slope = vtkReliefSearchMethod::Get(vtkOpenGLReliefMapper::SLOPE_MIPMAP);
+  EXPECT_EQ(vtkReliefSearchMethod::GetAutomatic(vtkOpenGLReliefMapper::CONE_STEP), automatic);
+  const vtkReliefSearchMethod* overSlopes =
+    vtkReliefSearchMethod::GetAutomatic(vtkOpenGLReliefMapper::SLOPE_MIPMAP);
+  ASSERT_NE(overSlopes, nullptr);
+  EXPECT_NE(overSlopes, automatic);
+  // Automatic still, reading SlopeMipmap's image: one pyramid for both, built once
+  EXPECT_EQ(overSlopes->Id, automatic->Id);
+  EXPECT_STREQ(overSlopes->Name, automatic->Name);
+  EXPECT_EQ(overSlopes->GetAccelerationKind(), slope->GetAccelerationKind());
+  EXPECT_EQ(overSlopes->SetUniforms, slope->SetUniforms);
+  EXPECT_NE(sources.find(std::string("ReliefHit ") + overSlopes->Function +
+              "(ReliefRay ray, int linearSteps, int refinementSteps)"),
+    std::string::npos);
+  EXPECT_NE(ReliefCpuMirror::FindSearch(overSlopes->Function), nullptr);
+  for (int id : { -1, int(vtkOpenGLReliefMapper::LINEAR_BINARY),
+         int(vtkOpenGLReliefMapper::MAXIMUM_MIPMAP), int(vtkOpenGLReliefMapper::AUTOMATIC) })
+  {
+    EXPECT_EQ(vtkReliefSearchMethod::GetAutomatic(id), nullptr) << id;
+  }
 }
 }

@@ -114,6 +114,11 @@ void vtkReliefSurfaceRepresentation::SetReliefScreenTolerance(double pixels)
   this->GetReliefMapper()->GetReliefMapper()->SetScreenTolerance(pixels);
 }
 
+void vtkReliefSurfaceRepresentation::SetReliefAutomaticAcceleration(int method)
+{
+  this->GetReliefMapper()->GetReliefMapper()->SetAutomaticAcceleration(method);
+}
+
 void vtkReliefSurfaceRepresentation::SetReliefSafetyRadiusTolerance(double tolerance)
 {
   this->GetReliefMapper()->GetReliefMapper()->SetSafetyRadiusTolerance(tolerance);

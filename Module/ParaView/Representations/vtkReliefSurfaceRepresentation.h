@@ -62,6 +62,7 @@ public:
   void SetReliefDepthScale(double depth);
   void SetReliefSearchMethod(int method);
   void SetReliefScreenTolerance(double pixels);
+  void SetReliefAutomaticAcceleration(int method);
   void SetReliefSafetyRadiusTolerance(double tolerance);
   void SetReliefSelfShadowing(bool enabled);
   ///@}

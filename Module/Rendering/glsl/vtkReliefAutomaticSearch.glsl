@@ -8,18 +8,19 @@
 //   within the tolerance of the entry, so no search is needed; one secant step (parallax
 //   occlusion mapping with a single interval, 3 samples) places it, and the shading is
 //   normal mapping with parallax;
-// - longer straight runs: ConeStep, whose steps grow with the run far more slowly,
-//   ending where the bracket it found lies within the tolerance on screen and within
-//   1/20 of the depth; beyond 2048 cells, the curved rays' steps, whose cost is bounded
-//   (they may pass features narrower than a step: the one place the regimes can part by
-//   more than the tolerance). Where the run is not known (ScreenTolerance 0), exact;
+// - longer straight runs: ConeStep (or SlopeMipmap, reliefSearchAutomaticOverSlopes, where
+//   the mapper's AutomaticAcceleration says so), whose steps grow with the run far more
+//   slowly, ending where the bracket it found lies within the tolerance on screen and
+//   within 1/20 of the depth; beyond 2048 cells, the curved rays' steps, whose cost is
+//   bounded (they may pass features narrower than a step: the one place the regimes can
+//   part by more than the tolerance). Where the run is not known (ScreenTolerance 0), exact;
 // - curved rays (the quadric frame, reliefSearchAutomaticCurved): fixed steps of half a
 //   texel, or of one tolerance where that is longer on screen, then bisection until the
 //   bracket spans a quarter of the tolerance and 1/256 of the depth.
 // The regimes meet where their hits lie within the tolerance of each other, so moving
 // the camera across a boundary shifts the picture by less than the tolerance. Shared
-// with the CPU mirror; needs vtkReliefSearch.glsl, vtkReliefGridSearch.glsl and
-// vtkReliefConeSearch.glsl before it.
+// with the CPU mirror; needs vtkReliefSearch.glsl, vtkReliefGridSearch.glsl,
+// vtkReliefSlopeSearch.glsl and vtkReliefConeSearch.glsl before it.
 
 // Manhattan cells of the whole run up to which ExactDDA's walk, one sample a cell, costs
 // less than ConeStep's cone reads, bisection and final cells (chosen on the automatic
@@ -71,7 +72,8 @@ ReliefHit reliefSearchAutomaticCurved(ReliefRay ray, int linearSteps, int refine
   return reliefBinaryRefine(ray, bracket, int(clamp(halvings, 1.0f, 16.0f)));
 }
 
-ReliefHit reliefSearchAutomatic(ReliefRay ray, int linearSteps, int refinementSteps)
+// Straight rays, long runs stepped over the slope pyramid (`overSlopes`) or the cone map.
+ReliefHit reliefAutomaticStraight(ReliefRay ray, bool overSlopes)
 {
   vec2 run = reliefRunTexels(ray);
   float cells = run.x + run.y;
@@ -88,5 +90,16 @@ ReliefHit reliefSearchAutomatic(ReliefRay ray, int linearSteps, int refinementSt
   {
     return reliefSearchAutomaticCurved(ray, 0, 0); // bounded: at most 256 steps
   }
-  return reliefConeStepWithin(ray, min(1.0f / ray.screenRun, RELIEF_AUTOMATIC_DEPTH_SPAN));
+  float endSpan = min(1.0f / ray.screenRun, RELIEF_AUTOMATIC_DEPTH_SPAN);
+  return overSlopes ? reliefSlopeMipmapWithin(ray, endSpan) : reliefConeStepWithin(ray, endSpan);
+}
+
+ReliefHit reliefSearchAutomatic(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefAutomaticStraight(ray, false);
+}
+
+ReliefHit reliefSearchAutomaticOverSlopes(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefAutomaticStraight(ray, true);
 }

@@ -117,9 +117,10 @@ float reliefHermiteRoot(float g0, float d0, float g1, float d1)
 // Hermite interpolant (gap and rate known at both ends) or Newton (from below) puts the
 // crossing, bounded by the rates, and solves it over its part of the bracket: the crossing,
 // or a new end with its gap and rate known exactly; when two probes have not halved the
-// bracket, a bisection follows.
+// bracket, a bisection follows. A bracket no longer than `endSpan` in t ends the search at
+// its far end (the Automatic search's tolerance; 0: exact).
 ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, float below,
-  vec2 gapBelow, vec2 rates, int samples)
+  vec2 gapBelow, vec2 rates, int samples, float endSpan)
 {
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
@@ -129,6 +130,11 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
   float olderWidth = lastWidth;
   for (int i = 0; i < 64 && above < below; ++i)
   {
+    if (below - above <= endSpan)
+    {
+      // close enough: `above` is known above the field, the self-shadow's start
+      return reliefHitAt(ray, below, above, true, samples);
+    }
     float low = max(above, below - gapBelow.x / rates.y);
     float high = min(below, below - gapBelow.x / rates.x);
     if (gapAbove.x > 0.0f)
@@ -182,9 +188,9 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
 
 // The crossing bracketed in [above, below], where `cell` (its corners read) holds the ray
 // on or below the field at `below`: that cell first, back to where the ray entered it (no
-// further read when it holds the crossing), then reliefSlopeRefine.
+// further read when it holds the crossing), then reliefSlopeRefine, ending as it does.
 ReliefHit reliefSlopeBracket(ReliefRay ray, ReliefGridRay grid, float above, float below,
-  vec2 cell, vec4 depths, vec2 rates, int samples)
+  vec2 cell, vec4 depths, vec2 rates, int samples, float endSpan)
 {
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
@@ -200,10 +206,11 @@ ReliefHit reliefSlopeBracket(ReliefRay ray, ReliefGridRay grid, float above, flo
   {
     return reliefGridHit(ray, grid, back >= 0.0f ? back : below, true, samples);
   }
-  return reliefSlopeRefine(ray, grid, above, tIn, gap, rates, samples);
+  return reliefSlopeRefine(ray, grid, above, tIn, gap, rates, samples, endSpan);
 }
 
-ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinementSteps)
+// The search; a bracket no longer than `endSpan` in t ends it at its far end (0: exact).
+ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
 {
   vec2 size = RELIEF_DEPTH_SIZE;
   ReliefGridRay grid = reliefGridRay(ray, size);
@@ -287,7 +294,8 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
           float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
           if (gapOut <= 0.0f)
           {
-            return reliefSlopeBracket(ray, grid, t, tOut, exitCell, exitDepths, rates, samples);
+            return reliefSlopeBracket(
+              ray, grid, t, tOut, exitCell, exitDepths, rates, samples, endSpan);
           }
           over = true;
           nextLow = gapOut;
@@ -314,4 +322,9 @@ ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinement
     gapLow = nextLow;
   }
   return reliefGridEnd(ray, grid, samples);
+}
+
+ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinementSteps)
+{
+  return reliefSlopeMipmapWithin(ray, 0.0f);
 }
