@@ -228,6 +228,14 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
   vec2 heldOrigin = vec2(0.0f, 0.0f);
   vec4 heldTops = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   vec2 heldRates = vec2(0.0f, 0.0f);
+  // the outcome, acted on after the loop so that the loop body stays small (every fragment
+  // of a SIMD group runs through all of it): a hit at tHit, or a crossing bracketed in
+  // [bracketStart, tHit] by the cell at tHit (its corners read), in a node of `rates`
+  float tHit = -1.0f;
+  float bracketStart = -1.0f;
+  vec2 bracketCell = vec2(0.0f, 0.0f);
+  vec4 bracketDepths = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  vec2 bracketRates = vec2(0.0f, 0.0f);
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && t < 1.0f; ++i)
   {
     vec2 cell = reliefCellAfter(grid, t, signs, inverseRun);
@@ -252,64 +260,67 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
       over = zOut < top || bound > 0.0f;
       nextLow = max(max(top - zOut, bound), 0.0f);
     }
-    if (!over && level == 0)
-    {
-      // the cell itself: its corners hold all a node would
-      samples += 1;
-      vec4 depths = RELIEF_CELL_DEPTHS(cell);
-      float tHit = reliefCellIntersection(grid, cell, depths, t, tOut);
-      if (tHit >= 0.0f)
-      {
-        return reliefGridHit(ray, grid, tHit, true, samples);
-      }
-      over = true;
-      nextLow = max(reliefPatchGap(grid, cell, depths, tOut).x, 0.0f);
-    }
-    else if (!over)
+    // what the step reads: at level 0 the cell itself (its corners hold all a node would);
+    // above, the node's texel and, in case (d), the cell at the node's exit
+    bool readsCell = !over && level == 0;
+    vec2 readCell = cell;
+    vec2 rates = vec2(0.0f, 0.0f);
+    if (!over && level > 0)
     {
       samples += 1;
       vec4 texel = RELIEF_SLOPE_NODE(node, level);
-      vec2 rates = reliefSlopeRates(texel, grid);
-      heldNode = node;
-      heldLevel = level;
-      heldOrigin = origin;
-      heldTops = reliefSlopeChildTops(texel.x, texel.w);
-      heldRates = rates;
+      rates = reliefSlopeRates(texel, grid);
       float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
       over = zOut < texel.x || rates.x >= 0.0f || bound > 0.0f;
       nextLow = max(max(texel.x - zOut, bound), 0.0f);
+      // the children's tops, needed only where the ray goes on into the node
+      vec4 tops = over ? vec4(0.0f, 0.0f, 0.0f, 0.0f) : reliefSlopeChildTops(texel.x, texel.w);
       if (!over && rates.y < 0.0f)
       {
         // (d): a gap that only falls and is still open at the exit was open all along:
         // the exit's child says so when the ray clears its top there, else the exit's
         // cell, the node's whatever side of the border rounding puts the exit
-        vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
-        float exitTop = reliefSlopeChildTop(heldTops, floor((exitCell - low) / (0.5f * span)));
+        readCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
+        float exitTop = reliefSlopeChildTop(tops, floor((readCell - low) / (0.5f * span)));
         over = zOut < exitTop;
         nextLow = max(exitTop - zOut, nextLow);
-        if (!over)
-        {
-          samples += 1;
-          vec4 exitDepths = RELIEF_CELL_DEPTHS(exitCell);
-          float gapOut = reliefPatchGap(grid, exitCell, exitDepths, tOut).x;
-          if (gapOut <= 0.0f)
-          {
-            return reliefSlopeBracket(
-              ray, grid, t, tOut, exitCell, exitDepths, rates, samples, endSpan);
-          }
-          over = true;
-          nextLow = gapOut;
-        }
+        readsCell = !over;
       }
-      if (!over)
+      if (!over && !readsCell)
       {
-        // down, where the ray reaches the node's top, the gap bound carried there
+        // down, where the ray reaches the node's top, the gap bound carried there, with
+        // the node's texel in hand for its children (a texel passed over stays out of
+        // hand, so that its parent's still serves its siblings)
+        heldNode = node;
+        heldLevel = level;
+        heldOrigin = origin;
+        heldTops = tops;
+        heldRates = rates;
         float tDown = max(t, min((texel.x - grid.depth) / grid.descent, tOut));
         gapLow = max(gapLow + rates.x * (tDown - t), 0.0f);
         t = tDown;
         level -= 1;
         continue;
       }
+    }
+    if (readsCell)
+    {
+      samples += 1;
+      vec4 depths = RELIEF_CELL_DEPTHS(readCell);
+      float gapOut = reliefPatchGap(grid, readCell, depths, tOut).x;
+      // a cell is solved from t; in (d) a gap closed at the exit brackets the one crossing
+      tHit = level == 0 ? reliefCellIntersection(grid, cell, depths, t, tOut)
+                        : (gapOut <= 0.0f ? tOut : -1.0f);
+      if (tHit >= 0.0f)
+      {
+        bracketStart = level == 0 ? -1.0f : t;
+        bracketCell = readCell;
+        bracketDepths = depths;
+        bracketRates = rates;
+        break;
+      }
+      over = true;
+      nextLow = max(gapOut, 0.0f);
     }
     // past the node, and up a level when the next node has another parent
     vec2 next = reliefCellAfter(grid, tOut, signs, inverseRun);
@@ -321,7 +332,13 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
     t = tOut;
     gapLow = nextLow;
   }
-  return reliefGridEnd(ray, grid, samples);
+  if (bracketStart >= 0.0f)
+  {
+    return reliefSlopeBracket(ray, grid, bracketStart, tHit, bracketCell, bracketDepths,
+      bracketRates, samples, endSpan);
+  }
+  return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
+                      : reliefGridEnd(ray, grid, samples);
 }
 
 ReliefHit reliefSearchSlopeMipmap(ReliefRay ray, int linearSteps, int refinementSteps)
