@@ -272,7 +272,7 @@ std::vector<Setting> Settings()
     settings.push_back({ "Automatic", label.str(), Mapper::AUTOMATIC, 10, 5, 0.0, pixels });
   }
   settings.push_back(
-    { "Automatic", "0.5 pixels, over slopes", Mapper::AUTOMATIC, 10, 5, 0.0, 0.5, true });
+    { "Automatic over slopes", "0.5 pixels", Mapper::AUTOMATIC, 10, 5, 0.0, 0.5, true });
   return settings;
 }
 

@@ -487,9 +487,12 @@ int TestReliefGpuMatchesCpu(int, char*[])
       const vtkReliefSearchMethod& description = automatic
         ? *vtkReliefSearchMethod::GetAutomatic(acceleration)
         : *vtkReliefSearchMethod::Get(id);
-      const std::string method = vtkOpenGLReliefMapper::GetSearchMethodAsString(id) +
-        (automatic ? std::string(" over ") + vtkOpenGLReliefMapper::GetSearchMethodAsString(acceleration)
-                   : std::string());
+      std::string method = vtkOpenGLReliefMapper::GetSearchMethodAsString(id);
+      if (automatic)
+      {
+        method += std::string(" over ") +
+          vtkOpenGLReliefMapper::GetSearchMethodAsString(acceleration);
+      }
       if (!mirror::FindSearch(description.Function))
       {
         std::cerr << "ERROR: " << method << " has no search in the CPU mirror\n";

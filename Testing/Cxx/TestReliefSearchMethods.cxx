@@ -15,6 +15,7 @@
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkReliefTextureFilter.h"
 #include "vtkRenderWindow.h"
+#include "vtkSlopeMipmapFilter.h"
 #include "vtkTextureObject.h"
 
 #include <cstring>
@@ -213,6 +214,21 @@ int TestReliefSearchMethods(int, char*[])
   vtkNew<vtkConeStepMapFilter> cones;
   check(precomputedIsAccepted(cones, vtkOpenGLReliefMapper::CONE_STEP),
     "a precomputed cone map is accepted");
+  mapper->SetAccelerationConnection(nullptr);
+
+  // Automatic reads the image of its acceleration: a slope pyramid over slopes, and a
+  // cone map, which a slope pyramid is not, over cones
+  vtkNew<vtkSlopeMipmapFilter> slopes;
+  mapper->SetAutomaticAccelerationToSlopeMipmap();
+  check(precomputedIsAccepted(slopes, vtkOpenGLReliefMapper::AUTOMATIC),
+    "a precomputed slope pyramid is accepted by Automatic over slopes");
+  mapper->SetAutomaticAccelerationToConeStep();
+  window->Render();
+  check(messages->Count(vtkCommand::ErrorEvent) == 1 &&
+      messages->AnyMessageContains("vtkConeStepMapFilter") &&
+      mapper->GetActiveSearchMethod() == vtkOpenGLReliefMapper::LINEAR_BINARY,
+    "and refused by Automatic over cones, naming the filter it needs");
+  messages->Clear();
   mapper->SetAccelerationConnection(nullptr);
 
   // a negative safety tolerance is clamped to 0 with one warning; a new tolerance

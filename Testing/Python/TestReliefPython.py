@@ -98,6 +98,14 @@ class TestReliefPython(unittest.TestCase):
         self.assertEqual(len(errors.messages), 1)
         self.assertEqual(mapper.GetSearchMethod(), vtkOpenGLReliefMapper.LINEAR_BINARY)
 
+        # what Automatic steps long runs over: the cone map by default, or the slope pyramid
+        self.assertEqual(mapper.GetAutomaticAccelerationAsString(), "ConeStep")
+        mapper.SetAutomaticAccelerationToSlopeMipmap()
+        self.assertEqual(mapper.GetAutomaticAcceleration(), vtkOpenGLReliefMapper.SLOPE_MIPMAP)
+        mapper.SetAutomaticAcceleration(vtkOpenGLReliefMapper.EXACT_DDA)
+        self.assertEqual(len(errors.messages), 2)
+        self.assertEqual(mapper.GetAutomaticAccelerationAsString(), "SlopeMipmap")
+
     def test_each_method_names_the_filter_of_its_acceleration_image(self):
         expected = {vtkOpenGLReliefMapper.SAFETY_RADIUS: vtkSafetyRadiusFilter,
                     vtkOpenGLReliefMapper.CONE_STEP: vtkConeStepMapFilter,

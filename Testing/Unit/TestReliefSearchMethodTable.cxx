@@ -96,8 +96,9 @@ TEST(ReliefSearchMethodTable, CurvedRaysGetTheMethodsThatFollowThemAndAutomatics
 TEST(ReliefSearchMethodTable, AutomaticStepsOverTheConeMapOrTheSlopePyramid)
 {
   const std::string sources = ShaderSources();
-  const vtkReliefSearchMethod* automatic = vtkReliefSearchMethod::Get(vtkOpenGLReliefMapper::AUTOMATIC);
-  const vtkReliefSearchMethod* slope = vtkReliefSearchMethod::Get(vtkOpenGLReliefMapper::SLOPE_MIPMAP);
+  using Mapper = vtkOpenGLReliefMapper;
+  const vtkReliefSearchMethod* automatic = vtkReliefSearchMethod::Get(Mapper::AUTOMATIC);
+  const vtkReliefSearchMethod* slope = vtkReliefSearchMethod::Get(Mapper::SLOPE_MIPMAP);
   EXPECT_EQ(vtkReliefSearchMethod::GetAutomatic(vtkOpenGLReliefMapper::CONE_STEP), automatic);
   const vtkReliefSearchMethod* overSlopes =
     vtkReliefSearchMethod::GetAutomatic(vtkOpenGLReliefMapper::SLOPE_MIPMAP);

@@ -24,8 +24,8 @@
 
 // Manhattan cells of the whole run up to which ExactDDA's walk, one sample a cell, costs
 // less than ConeStep's cone reads, bisection and final cells (chosen on the automatic
-// study's stones map, Documentation/results.md), and less than the secant's three
-// samples.
+// study's stones map, Documentation/results.md; kept, unmeasured, over SlopeMipmap, whose
+// first steps on such runs are cell reads too), and less than the secant's three samples.
 #define RELIEF_AUTOMATIC_WALK_CELLS 6.0f
 #define RELIEF_AUTOMATIC_SECANT_CELLS 2.0f
 // The most of the depth a bracket that ends the search may span: the written depth's
