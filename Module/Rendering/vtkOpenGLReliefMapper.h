@@ -86,11 +86,10 @@ public:
    *   the hit (normal mapping with parallax, 3 samples); where it crosses a few cells,
    *   ExactDDA; over longer runs, ConeStep (so the mapper builds a cone map once per
    *   height map, shared with ConeStep's) or SlopeMipmap (AutomaticAcceleration), ending
-   *   within the tolerance; rays over 2048
-   *   cells in at most 256 steps. On curved rays (vtkOpenGLQuadricReliefMapper) fixed
-   *   steps of half a texel, or of one tolerance where that is longer on screen, then
-   *   bisection to a quarter of the tolerance. The step counts are ignored but for the
-   *   self-shadow rays.
+   *   within the tolerance; rays over 2048 cells in at most 256 steps. On curved rays
+   *   (vtkOpenGLQuadricReliefMapper) fixed steps of half a texel, or of one tolerance
+   *   where that is longer on screen, then bisection to a quarter of the tolerance. The
+   *   step counts are ignored but for the self-shadow rays.
    * - LinearBinary: LinearSteps fixed steps, then BinarySteps of bisection
    *   (Policarpo et al. 2005). Fast; misses features thinner than a step.
    * - Linear: the fixed steps alone.
@@ -184,7 +183,7 @@ public:
   /**
    * The acceleration the Automatic search steps long straight runs over: ConeStep's cone
    * map (CONE_STEP, default: two bytes a texel, and the fastest frames measured on
-   * llvmpipe) or SlopeMipmap's pyramid (SLOPE_MIPMAP: 14 to 50% fewer height samples at
+   * llvmpipe but on the largest maps) or SlopeMipmap's pyramid (SLOPE_MIPMAP: 14 to 50% fewer height samples at
    * 45 and 80 degrees and the same tolerance, for eight bytes a texel and more work a
    * sample, which pays where texture reads cost the most; Documentation/methods.md). Any
    * other value is refused with an error. A precomputed acceleration image (port 2) must
