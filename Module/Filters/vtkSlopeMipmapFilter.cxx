@@ -11,17 +11,17 @@ vtkStandardNewMacro(vtkSlopeMipmapFilter);
 
 namespace
 {
-constexpr int Components = 6;
-constexpr int ChildCodes = 32;     // 5 bits a child
-constexpr int ChildExponents = 16; // 4 bits: steps 2^-4 to 2^-19
-constexpr int ExponentUnit = 1 << 20;
-constexpr int ZeroCode = 2048;      // the code of 0; codes above are positive
-constexpr double CodesPerOctave = 128.0;
-constexpr double LeastOctave = -15.0; // magnitude code m stands for 2^(m / 128 - 15)
+constexpr int Components = 8;
+constexpr int TopBits = 20;          // a node's top: a multiple of 2^-20, rounded down
+constexpr int GrandchildCodes = 16;  // 4 bits a grandchild
+constexpr int GrandchildExponents = 16; // 4 bits: steps 2^-4 to 2^-19
+constexpr int ZeroCode = 512;        // the code of 0 (10 bits a bound); codes above are positive
+constexpr double CodesPerOctave = 30.0;
+constexpr double LeastOctave = -15.0; // magnitude code m stands for 2^(m / 30 - 15)
 
 // The code of `value` rounded toward +infinity (`up`) or -infinity, by one more code than
 // needed. 0 is exact.
-int SlopeCode(double value, bool up)
+unsigned int SlopeCode(double value, bool up)
 {
   if (value == 0.0)
   {
@@ -37,51 +37,101 @@ int SlopeCode(double value, bool up)
   const int steps = larger ? static_cast<int>(std::ceil(exact)) + 1
                            : static_cast<int>(std::floor(exact)) - 1;
   // magnitudes below the least code become 0 or the least code; those beyond the largest
-  // (2^0.99) its code: depths in [0, 1] give slopes of at most 1
+  // (2^2) its code: depths in [0, 1] give slopes of at most 1
   const int magnitude = std::min(std::max(steps, larger ? 1 : 0), ZeroCode - 1);
   return value > 0.0 ? ZeroCode + magnitude : ZeroCode - magnitude;
+}
+
+// The 20-bit code of a top, rounded down: the search may take a node to be no higher.
+unsigned int TopCode(double top)
+{
+  const double scaled = std::floor(std::ldexp(std::min(std::max(top, 0.0), 1.0), TopBits));
+  return static_cast<unsigned int>(std::min(scaled, std::ldexp(1.0, TopBits) - 1.0));
+}
+
+// The coded grandchildren of the output's three words (EncodeGrandchildTops): the exponent,
+// then codes 0 to 15.
+void UnpackGrandchildren(const double words[3], unsigned int& exponent, unsigned int codes[16])
+{
+  auto bitsOf = [](double word) { return static_cast<unsigned int>(word); };
+  const unsigned int first = bitsOf(words[0]);
+  exponent = first & 15u;
+  for (int k = 0; k < 5; ++k)
+  {
+    codes[k] = (first >> (4 + 4 * k)) & 15u;
+  }
+  for (int k = 0; k < 6; ++k)
+  {
+    codes[5 + k] = (bitsOf(words[1]) >> (4 * k)) & 15u;
+  }
+  for (int k = 0; k < 5; ++k)
+  {
+    codes[11 + k] = (bitsOf(words[2]) >> (4 * k)) & 15u;
+  }
 }
 }
 
 vtkSlopeMipmapFilter::vtkSlopeMipmapFilter() = default;
 
-float vtkSlopeMipmapFilter::EncodeSlopes(double low, double high)
+unsigned int vtkSlopeMipmapFilter::EncodeSlopes(double low, double high)
 {
-  return static_cast<float>(SlopeCode(low, false) * 4096 + SlopeCode(high, true));
+  return SlopeCode(low, false) + 1024u * SlopeCode(high, true);
 }
 
-float vtkSlopeMipmapFilter::EncodeChildTops(double top, const double childTops[4])
+double vtkSlopeMipmapFilter::DecodedTop(double top)
 {
+  return std::ldexp(static_cast<double>(TopCode(top)), -TopBits);
+}
+
+void vtkSlopeMipmapFilter::EncodeGrandchildTops(
+  double top, const double grandchildTops[16], float words[3])
+{
+  const double base = DecodedTop(top);
   double largest = 0.0;
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 16; ++k)
   {
-    largest = std::max(largest, childTops[k] - top);
+    largest = std::max(largest, grandchildTops[k] - base);
   }
-  int exponent = ChildExponents - 1;
-  while (exponent > 0 && std::ldexp(ChildCodes - 1, -(exponent + 4)) < largest)
+  int exponent = GrandchildExponents - 1;
+  while (exponent > 0 && std::ldexp(GrandchildCodes - 1, -(exponent + 4)) < largest)
   {
     --exponent;
   }
   const double step = std::ldexp(1.0, -(exponent + 4));
-  // the GPU adds the offset to the top in float and may round the step's division: a
-  // code never reaches within 2^-20 + step / 1024 of the child's top
-  const double margin = std::ldexp(1.0, -20) + step / 1024.0;
-  int packed = exponent * ExponentUnit;
-  for (int k = 0, weight = 1; k < 4; ++k, weight *= ChildCodes)
+  // the top and every code's offset are exact in a float, and so is their sum (at most
+  // 21 significant bits), but a GPU may take the step as a reciprocal a little too large:
+  // a code never reaches within a 1024th of a step of the grandchild's top
+  const double margin = step / 1024.0;
+  unsigned int packed[3] = { static_cast<unsigned int>(exponent), 0u, 0u };
+  for (int k = 0; k < 16; ++k)
   {
-    const double offset = childTops[k] - top - margin;
-    const int code = offset > 0.0 ? std::min(static_cast<int>(offset / step), ChildCodes - 1) : 0;
-    packed += code * weight;
+    const double offset = grandchildTops[k] - base - margin;
+    const unsigned int code = offset > 0.0
+      ? static_cast<unsigned int>(std::min(std::floor(offset / step), GrandchildCodes - 1.0))
+      : 0u;
+    const int word = k < 5 ? 0 : (k < 11 ? 1 : 2);
+    const int shift = k < 5 ? 4 + 4 * k : 4 * (k < 11 ? k - 5 : k - 11);
+    packed[word] |= code << shift;
   }
-  return static_cast<float>(packed);
+  for (int w = 0; w < 3; ++w)
+  {
+    words[w] = static_cast<float>(packed[w]); // at most 24 bits: exact
+  }
 }
 
-void vtkSlopeMipmapFilter::PackNode(const double node[6], float texel[4])
+void vtkSlopeMipmapFilter::PackNode(const double node[8], unsigned int texel[4])
 {
-  texel[0] = static_cast<float>(node[0]);
-  texel[1] = EncodeSlopes(node[1], node[2]);
-  texel[2] = EncodeSlopes(node[3], node[4]);
-  texel[3] = static_cast<float>(node[5]);
+  unsigned int exponent = 0;
+  unsigned int codes[16];
+  UnpackGrandchildren(node + 5, exponent, codes);
+  texel[0] = TopCode(node[0]) | exponent << 20 | codes[14] << 24 | codes[15] << 28;
+  texel[1] = EncodeSlopes(node[1], node[2]) | codes[8] << 20 | codes[9] << 24 | codes[10] << 28;
+  texel[2] = EncodeSlopes(node[3], node[4]) | codes[11] << 20 | codes[12] << 24 | codes[13] << 28;
+  texel[3] = 0u;
+  for (int k = 0; k < 8; ++k)
+  {
+    texel[3] |= codes[k] << (4 * k);
+  }
 }
 
 void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArray* output)
@@ -120,31 +170,100 @@ void vtkSlopeMipmapFilter::Compute(const vtkReliefDepthImage& field, vtkFloatArr
     }
   });
 
-  // each node's children's tops by slot, gathered as its children are taken in, then
-  // coded against the node's own (ReduceLevels visits nodes one at a time, in order)
-  double childTops[4] = { 0.0, 0.0, 0.0, 0.0 };
-  bool filled[4] = { false, false, false, false };
-  ReduceLevels(
-    width, height, Components, values,
-    [&](float* node, const float* child, int slot) {
-      node[0] = std::min(node[0], child[0]);
-      node[1] = std::min(node[1], child[1]);
-      node[2] = std::max(node[2], child[2]);
-      node[3] = std::min(node[3], child[3]);
-      node[4] = std::max(node[4], child[4]);
-      childTops[slot] = filled[slot] ? std::min<double>(childTops[slot], child[0]) : child[0];
-      filled[slot] = true;
-    },
-    [&](float* node) {
-      // a slot no child fills (an axis with a single child) holds the node's own top,
-      // which proves nothing more; the search asks for it only at such a node's far side
-      for (int k = 0; k < 4; ++k)
+  ReduceLevels(width, height, Components, values, [](float* node, const float* child, int) {
+    node[0] = std::min(node[0], child[0]);
+    node[1] = std::min(node[1], child[1]);
+    node[2] = std::max(node[2], child[2]);
+    node[3] = std::min(node[3], child[3]);
+    node[4] = std::max(node[4], child[4]);
+  });
+  this->EncodeGrandchildren(width, height, values);
+}
+
+void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* values)
+{
+  int atlasSize[2];
+  GetAtlasSize(width, height, atlasSize);
+  const int top = GetTopLevel(width, height);
+  for (int level = 1; level <= top; ++level)
+  {
+    int origin[2], size[2], below[2], belowSize[2];
+    GetLevelPlacement(width, height, level, origin, size);
+    // a level-1 node's grandchildren slots hold its cells, each over two slots a side
+    const int grandLevel = std::max(level - 2, 0);
+    GetLevelPlacement(width, height, grandLevel, below, belowSize);
+    auto topAt = [&](int x, int y) {
+      return values[(static_cast<size_t>(below[1] + y) * atlasSize[0] + below[0] + x) * Components];
+    };
+    // the grandchildren (or a level-1 node's cells) of node `node` along one axis, each
+    // with its first slot and its last: the search's slot is min(n - 4 node, 3), a child's
+    // cell's min(2 (c - 2 node), 2) and the next
+    auto slotsOf = [&](int node, int axisSize, int& first, int& last) {
+      int firstChild, lastChild;
+      GetChildRange(node, axisSize, level, firstChild, lastChild);
+      if (level == 1)
       {
-        childTops[k] = filled[k] ? childTops[k] : node[0];
-        filled[k] = false;
+        first = firstChild;
+        last = lastChild;
+        return;
       }
-      node[5] = EncodeChildTops(node[0], childTops);
-    });
+      int unused;
+      GetChildRange(firstChild, axisSize, level - 1, first, unused);
+      GetChildRange(lastChild, axisSize, level - 1, unused, last);
+    };
+    auto slotRange = [&](int n, int node, int& firstSlot, int& lastSlot) {
+      if (level == 1)
+      {
+        firstSlot = std::min(2 * (n - 2 * node), 2);
+        lastSlot = firstSlot + 1;
+        return;
+      }
+      firstSlot = lastSlot = std::min(n - 4 * node, 3);
+    };
+    this->ForRows(size[1], 8, 0.8 + 0.2 * (level - 1) / top, 0.8 + 0.2 * level / top,
+      [&](int begin, int end) {
+        for (int j = begin; j < end; ++j)
+        {
+          int firstRow, lastRow;
+          slotsOf(j, height, firstRow, lastRow);
+          for (int i = 0; i < size[0]; ++i)
+          {
+            int firstColumn, lastColumn;
+            slotsOf(i, width, firstColumn, lastColumn);
+            float* node =
+              values + (static_cast<size_t>(origin[1] + j) * atlasSize[0] + origin[0] + i) * Components;
+            // a slot no grandchild fills (an axis with a single child) holds the node's own
+            // top, which proves nothing more
+            double slotTops[16];
+            std::fill(slotTops, slotTops + 16, 2.0);
+            for (int y = firstRow; y <= lastRow; ++y)
+            {
+              int firstY, lastY;
+              slotRange(y, j, firstY, lastY);
+              for (int x = firstColumn; x <= lastColumn; ++x)
+              {
+                int firstX, lastX;
+                slotRange(x, i, firstX, lastX);
+                const double grandTop = topAt(x, y);
+                for (int sy = firstY; sy <= lastY; ++sy)
+                {
+                  for (int sx = firstX; sx <= lastX; ++sx)
+                  {
+                    double& slot = slotTops[sx + 4 * sy];
+                    slot = std::min(slot, grandTop);
+                  }
+                }
+              }
+            }
+            for (double& slot : slotTops)
+            {
+              slot = slot > 1.5 ? node[0] : slot;
+            }
+            EncodeGrandchildTops(node[0], slotTops, node + 5);
+          }
+        }
+      });
+  }
 }
 
 void vtkSlopeMipmapFilter::PrintSelf(ostream& os, vtkIndent indent)

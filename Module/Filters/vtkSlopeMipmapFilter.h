@@ -14,14 +14,15 @@
  * cannot fall in the node, that it cannot fall to 0 before the node's exit (a Lipschitz
  * bound), or that it only falls, so the ray meets the field at most once there.
  *
- * Each node above level 0 also holds the least depths of its four children, coded
- * relative to its own (EncodeChildTops): a search holding a node's texel knows its
- * children's tops without reading them, and passes over the ones the ray clears.
+ * Each node above level 0 also holds the least depths of its sixteen grandchildren
+ * (EncodeGrandchildTops), coded relative to its own: a search holding a node's texel
+ * knows its children's and grandchildren's tops without reading them, passes over the
+ * ones the ray clears and goes down through a child without reading it.
  *
  * Output: one VTK_FLOAT image, scalars "TopAndSlopes", of the atlas size of
- * vtkMaximumMipmapFilter, six components per texel: the least depth, then the least and
- * largest dD/dx, the least and largest dD/dy, then the children's tops coded (0 at level
- * 0). The mapper uploads the boxes in 12-bit logarithmic codes, rounded outward (PackNode).
+ * vtkMaximumMipmapFilter, eight components per texel: the least depth, then the least and
+ * largest dD/dx, the least and largest dD/dy, then the grandchildren's tops coded in three
+ * words (0 at level 0). The mapper uploads a node as four 32-bit integers (PackNode).
  */
 #ifndef vtkSlopeMipmapFilter_h
 #define vtkSlopeMipmapFilter_h
@@ -36,34 +37,42 @@ public:
   vtkTypeMacro(vtkSlopeMipmapFilter, vtkMaximumMipmapFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  int GetOutputComponents() override { return 6; }
+  int GetOutputComponents() override { return 8; }
 
   /**
-   * The least depths of a node's children (slot x + 2 y: the child at offset x along u
-   * and y along v; the last node of a row folds its odd third child into offset 1), coded
-   * relative to the node's least depth `top`, as the shader decodes them
-   * (reliefSlopeChildTops): four 5-bit codes c and a 4-bit exponent e packed in an exact
-   * integer, e 2^20 + c0 + 32 c1 + 1024 c2 + 32768 c3; a child's top decodes to
-   * top + c 2^-(e + 4), rounded down (toward the top, what the search may assume) with a
-   * margin for the GPU's float rounding, on the finest step that holds the largest.
+   * A node's top as the search decodes it: rounded down to a multiple of 2^-20.
    */
-  static float EncodeChildTops(double top, const double childTops[4]);
+  static double DecodedTop(double top);
 
   /**
-   * Two slope bounds [low, high] (depth per cell) packed in one float, as the shader
-   * decodes them (reliefSlopeDecode): two 12-bit codes, low * 4096 + high, each a sign
-   * and a logarithm of the magnitude, 128 codes per octave from 2^-15 to 2; low is
-   * rounded down and high up, by one more code than needed so that the GPU's exp2 cannot
-   * round them inward.
+   * The least depths of a node's grandchildren, slot x + 4 y (the grandchild at offset x
+   * along u and y along v from the first; the last node of a row folds its grandchildren
+   * past the fourth into offset 3; a level-1 node's slots hold its cells, each over two
+   * slots a side), coded relative to the node's decoded top (DecodedTop) as the shader
+   * decodes them (reliefSlopeGrandchildTop): 4-bit codes c on one step 2^-(e + 4), e the
+   * finest of 0 to 15 on which fifteen steps hold the largest offset, each rounded down
+   * with a margin of a 1024th of a step for the GPU's rounding of the step.
+   * `words`: e and codes 0 to 4, codes 5 to 10 and codes 11 to 15, 4 bits each, in three
+   * exact integers.
    */
-  static float EncodeSlopes(double low, double high);
+  static void EncodeGrandchildTops(double top, const double grandchildTops[16], float words[3]);
 
   /**
-   * The four floats a node of the output (its six components) is uploaded as: its
-   * least depth, its two slope boxes, each packed by EncodeSlopes, and its children's
-   * coded tops.
+   * Two slope bounds [low, high] (depth per cell) packed in 20 bits, as the shader decodes
+   * them (reliefSlopeDecode): two 10-bit codes, low + 1024 high, each a sign and a
+   * logarithm of the magnitude, 30 codes per octave from 2^-15 to 4; low is rounded down
+   * and high up, by one more code than needed so that the GPU's exp2 cannot round them
+   * inward.
    */
-  static void PackNode(const double node[6], float texel[4]);
+  static unsigned int EncodeSlopes(double low, double high);
+
+  /**
+   * The four 32-bit integers a node of the output (its eight components) is uploaded as
+   * (RGBA32UI), bit 0 lowest: x = decoded top * 2^20 (bits 0-19), the grandchildren's
+   * exponent (20-23) and codes 14 and 15 (24-31); y = the dD/dx bounds (EncodeSlopes,
+   * 0-19) and codes 8 to 10; z = the dD/dy bounds and codes 11 to 13; w = codes 0 to 7.
+   */
+  static void PackNode(const double node[8], unsigned int texel[4]);
 
 protected:
   vtkSlopeMipmapFilter();
@@ -72,6 +81,9 @@ protected:
   const char* GetProductName() override { return "a slope mipmap"; }
   const char* GetOutputName() override { return "TopAndSlopes"; }
   void Compute(const vtkReliefDepthImage& field, vtkFloatArray* output) override;
+
+  // Components 5 to 7 of every node above level 0, from the levels' tops.
+  void EncodeGrandchildren(int width, int height, float* values);
 
 private:
   vtkSlopeMipmapFilter(const vtkSlopeMipmapFilter&) = delete;

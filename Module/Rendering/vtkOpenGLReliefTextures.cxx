@@ -19,6 +19,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnsignedIntArray.h"
 #include "vtkUnsignedShortArray.h"
 #include "vtkWindow.h"
 #include "vtk_glew.h"
@@ -57,9 +58,12 @@ bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
   // method's image would be read with another's layout
   texture->ResetFormatAndType();
   texture->SetInternalFormat(internalFormat);
+  // integer images (the slope pyramid's codes) are read through an integer format
+  const bool integers = values->GetDataType() == VTK_UNSIGNED_INT;
   texture->SetFormat(components == 1 ? GL_RED
       : components == 2             ? GL_RG
       : components == 3             ? GL_RGB
+      : integers                    ? GL_RGBA_INTEGER
                                     : GL_RGBA);
   texture->SetWrapS(vtkTextureObject::Repeat);
   texture->SetWrapT(vtkTextureObject::Repeat);
@@ -99,7 +103,7 @@ vtkSmartPointer<vtkDataArray> EncodeConeMap(vtkImageData* coneMap)
   return codes;
 }
 
-// vtkSlopeMipmapFilter's atlas of a reliefSize map as uploaded: four floats a node
+// vtkSlopeMipmapFilter's atlas of a reliefSize map as uploaded: four integers a node
 // (PackNode), from level 1's first column on: SlopeMipmap solves single cells from the
 // height map and never reads level 0 (vtkReliefGridSearch.glsl's RELIEF_SLOPE_NODE), two
 // thirds of the atlas. `dimensions` become the uploaded image's (the last column where the
@@ -117,7 +121,7 @@ vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(
     ? levelOne[0]
     : atlasWidth - 1;
   dimensions[0] = atlasWidth - first;
-  auto packed = vtkSmartPointer<vtkFloatArray>::New();
+  auto packed = vtkSmartPointer<vtkUnsignedIntArray>::New();
   packed->SetNumberOfComponents(4);
   packed->SetNumberOfTuples(static_cast<vtkIdType>(dimensions[0]) * dimensions[1]);
   vtkSMPTools::For(0, packed->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
@@ -125,7 +129,7 @@ vtkSmartPointer<vtkDataArray> EncodeSlopeMipmap(
     {
       const vtkIdType row = node / dimensions[0];
       const vtkIdType column = first + node % dimensions[0];
-      double values[6];
+      double values[8];
       nodes->GetTuple(row * atlasWidth + column, values);
       vtkSlopeMipmapFilter::PackNode(values, packed->GetPointer(4 * node));
     }
@@ -422,6 +426,7 @@ bool vtkOpenGLReliefTextures::SharedAcceleration::Upload(
   }
   const int components = values->GetNumberOfComponents();
   const unsigned int internalFormat = cones ? GL_RG8
+    : values->GetDataType() == VTK_UNSIGNED_INT ? GL_RGBA32UI
     : components == 1                       ? GL_R32F
     : components == 2                       ? GL_RG32F
     : components == 3                       ? GL_RGB32F

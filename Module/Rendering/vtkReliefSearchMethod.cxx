@@ -160,5 +160,7 @@ int vtkReliefSearchMethod::GetAccelerationKind() const
 
 std::string vtkReliefSearchMethod::GetShaderDefine() const
 {
-  return std::string("#define RELIEF_SEARCH ") + this->Function + "\n";
+  // the slope pyramid is read as integers (vtkReliefFragmentDec.glsl's sampler)
+  return std::string("#define RELIEF_SEARCH ") + this->Function + "\n" +
+    (this->Encoding == SLOPE_CODES ? "#define RELIEF_ACCELERATION_CODES\n" : "");
 }

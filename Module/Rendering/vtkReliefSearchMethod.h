@@ -31,7 +31,7 @@ public:
     NO_ACCELERATION, ///< the method reads the depth texture only
     FLOAT_TEXELS,    ///< the filter's floats as they are: R32F or RG32F
     CONE_BYTES,      ///< vtkConeStepMapFilter::EncodeCone's two bytes a cell: RG8
-    SLOPE_CODES      ///< vtkSlopeMipmapFilter::PackNode's four floats a node: RGBA32F
+    SLOPE_CODES      ///< vtkSlopeMipmapFilter::PackNode's four integers a node: RGBA32UI
   };
 
   int Id;               ///< vtkOpenGLReliefMapper::SearchMethods

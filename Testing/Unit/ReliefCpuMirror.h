@@ -74,7 +74,7 @@ struct DepthField
 
 /// A pyramid as the GPU holds it: level L of max(1, size >> L) nodes per axis, unpacked
 /// from the atlas of vtkMaximumMipmapFilter (least depths) or vtkSlopeMipmapFilter (the
-/// texels of RELIEF_SLOPE_NODE: least depth, packed slope bounds, children's coded tops).
+/// texels of RELIEF_SLOPE_NODE: vtkSlopeMipmapFilter::PackNode's four integers).
 template <typename Value>
 struct NodePyramid
 {
@@ -90,7 +90,7 @@ struct NodePyramid
   }
 };
 using DepthPyramid = NodePyramid<float>;
-using SlopePyramid = NodePyramid<vec4>;
+using SlopePyramid = NodePyramid<uvec4>;
 
 /// A value per cell as the acceleration filters write them, repeating like the texture:
 /// vtkConeStepMapFilter's (top depth, cone ratio), vtkSafetyRadiusFilter's radius.

@@ -102,11 +102,12 @@ inline DepthPyramid PyramidOf(const DepthField& field)
 inline SlopePyramid SlopesOf(const DepthField& field)
 {
   vtkNew<vtkSlopeMipmapFilter> filter;
-  return PyramidFromAtlas<vec4>(filter, field, [](const float* node) {
-    const double values[6] = { node[0], node[1], node[2], node[3], node[4], node[5] };
-    float texel[4];
+  return PyramidFromAtlas<uvec4>(filter, field, [](const float* node) {
+    const double values[8] = { node[0], node[1], node[2], node[3], node[4], node[5], node[6],
+      node[7] };
+    unsigned int texel[4];
     vtkSlopeMipmapFilter::PackNode(values, texel);
-    return vec4(texel[0], texel[1], texel[2], texel[3]);
+    return uvec4(texel[0], texel[1], texel[2], texel[3]);
   });
 }
 

@@ -55,8 +55,12 @@ TEST(ReliefSearchMethodTable, EveryMethodIsDescribedOnceAndFoundWhereItIsRead)
       << method->Name << ": no " << signature << " in the shader sources";
     EXPECT_NE(ReliefCpuMirror::FindSearch(method->Function), nullptr)
       << method->Name << ": the CPU mirror has no " << method->Function;
+    // the slope pyramid's codes are read through an integer sampler, the rest as floats
     EXPECT_EQ(method->GetShaderDefine(),
-      std::string("#define RELIEF_SEARCH ") + method->Function + "\n");
+      std::string("#define RELIEF_SEARCH ") + method->Function + "\n" +
+        (method->Encoding == vtkReliefSearchMethod::SLOPE_CODES
+            ? "#define RELIEF_ACCELERATION_CODES\n"
+            : ""));
     auto filter = vtk::TakeSmartPointer(
       method->NewAccelerationFilter ? method->NewAccelerationFilter() : nullptr);
     EXPECT_EQ(filter != nullptr, method->NeedsAcceleration()) << method->Name;
@@ -109,6 +113,8 @@ TEST(ReliefSearchMethodTable, AutomaticStepsOverTheConeMapOrTheSlopePyramid)
   EXPECT_STREQ(overSlopes->Name, automatic->Name);
   EXPECT_EQ(overSlopes->GetAccelerationKind(), slope->GetAccelerationKind());
   EXPECT_EQ(overSlopes->SetUniforms, slope->SetUniforms);
+  EXPECT_NE(overSlopes->GetShaderDefine().find("#define RELIEF_ACCELERATION_CODES\n"),
+    std::string::npos);
   EXPECT_NE(sources.find(std::string("ReliefHit ") + overSlopes->Function +
               "(ReliefRay ray, int linearSteps, int refinementSteps)"),
     std::string::npos);

@@ -1,7 +1,7 @@
 // The SlopeMipmap search of vtkReliefSlopeSearch.glsl and the pyramid of
 // vtkSlopeMipmapFilter it trusts: exact against the brute-force reference, boxes that hold
-// every gradient under their node, codes rounded outward, children's tops coded at or above
-// every child.
+// every gradient under their node, codes rounded outward, grandchildren's tops coded at or
+// above every child and grandchild.
 #include "ReliefSearchReference.h"
 
 #include <algorithm>
@@ -92,21 +92,22 @@ TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
   EXPECT_LT(slopes, 0.8 * mipmap);
 }
 
-TEST_F(ReliefSlopeMipmap, ChildTopsInHandSaveReads)
+TEST_F(ReliefSlopeMipmap, GrandchildTopsInHandSaveReads)
 {
-  // the same rays with every child's top coded as its parent's (the codes' zero): the
-  // search must then read each child it enters that the parent's Lipschitz bound does
-  // not clear, and finds the same hits
+  // the same rays with every grandchild's top coded as its grandparent's (the codes'
+  // zero): the search must then go down to each node it enters that the texel's Lipschitz
+  // bound does not clear, and read it, and finds the same hits
   const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
     [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
   CurrentField = &terrain.Field;
   CurrentPyramid = &terrain.Pyramid;
   SlopePyramid uncoded = AllSlopes->at(terrain.Name);
-  for (std::vector<vec4>& level : uncoded.Levels)
+  for (std::vector<uvec4>& level : uncoded.Levels)
   {
-    for (vec4& texel : level)
+    for (uvec4& texel : level)
     {
-      texel.w = 0.0f;
+      // the top and the slope boxes kept: the low 20 bits of x, y and z
+      texel = uvec4(texel.x & 0xFFFFFu, texel.y & 0xFFFFFu, texel.z & 0xFFFFFu, 0u);
     }
   }
   long coded = 0;
@@ -123,67 +124,98 @@ TEST_F(ReliefSlopeMipmap, ChildTopsInHandSaveReads)
     plain += uncodedHit.samples;
   }
   std::cout << "terrain at 80 degrees: " << coded / 2000.0 << " samples per ray, "
-            << plain / 2000.0 << " with the children's tops unknown\n";
+            << plain / 2000.0 << " with the grandchildren's tops unknown\n";
   EXPECT_LT(coded, 0.9 * plain);
 }
 
-TEST(ReliefSlopeMipmapFilter, ChildTopsLieAtOrAboveEveryChild)
+TEST(ReliefSlopeMipmapFilter, KnownTopsLieAtOrAboveEveryChildAndGrandchild)
 {
-  // odd sizes (a last node with three children a side, folded into its second slot), a
-  // field spanning the whole depth range and one of offsets finer than the finest step
+  // odd sizes (last nodes with three children a side, folded into the last slots), a field
+  // spanning the whole depth range and one of offsets finer than the finest step: every
+  // node's top as its parent's and its grandparent's texel tell it (the shader's own
+  // reliefSlopeKnownTop) is at most its own, and a grandchild's within a step of it
   int unfilled = 0;
   for (const DepthField& field :
     { RandomField(37, 21, 5, 0.0f, 1.0f), RandomField(19, 26, 3, 0.5f, 0.5f + 1e-6f) })
   {
+    const DepthPyramid tops = PyramidOf(field);
     const SlopePyramid slopes = SlopesOf(field);
-    int checked = 0;
+    CurrentField = &field; // the pyramid's level sizes
+    int checked[3] = { 0, 0, 0 };
     for (int level = 1; level <= slopes.Top(); ++level)
     {
       for (int j = 0; j < slopes.Heights[level]; ++j)
       {
         for (int i = 0; i < slopes.Widths[level]; ++i)
         {
-          const vec4 texel = slopes.At(vec2(i, j), level);
-          const vec4 decoded = reliefSlopeChildTops(texel.x, texel.w);
-          int firstColumn, lastColumn, firstRow, lastRow;
-          vtkSlopeMipmapFilter::GetChildRange(i, field.Width, level, firstColumn, lastColumn);
-          vtkSlopeMipmapFilter::GetChildRange(j, field.Height, level, firstRow, lastRow);
-          float slotTop[4] = { 2.0f, 2.0f, 2.0f, 2.0f };
+          const vec2 node(i, j);
+          const vec2 low(i << level, j << level);
+          const ReliefSlopeNode held = reliefSlopeNodeOf(slopes.At(node, level), level, low,
+            reliefPyramidNodeEnd(node, level, vec2(0.0f, 0.0f)), 0.0f);
+          ASSERT_LE(held.top, tops.At(node, level));
+          ASSERT_GE(held.top, tops.At(node, level) - std::ldexp(1.0f, -20));
+          // the largest offset of a grandchild's top (a level-1 node's: a cell's) bounds
+          // the step: at most 2 / 15 of it, or 2^-19
           float largest = 0.0f;
-          for (int y = firstRow; y <= lastRow; ++y)
+          float slotTop[16];
+          std::fill(slotTop, slotTop + 16, 2.0f);
+          for (int generation = 1; generation <= std::min(level, 2); ++generation)
           {
-            for (int x = firstColumn; x <= lastColumn; ++x)
+            const int below = level - generation;
+            for (int y = 0; y < slopes.Heights[below]; ++y)
             {
-              const int slot = std::min(x - firstColumn, 1) + 2 * std::min(y - firstRow, 1);
-              const float top = slopes.At(vec2(x, y), level - 1).x;
-              slotTop[slot] = std::min(slotTop[slot], top);
-              largest = std::max(largest, top - texel.x);
+              for (int x = 0; x < slopes.Widths[below]; ++x)
+              {
+                const vec2 descendant(x, y);
+                // the descendant's first cell
+                const vec2 cell(x << below, y << below);
+                if (reliefSlopeGeneration(held, cell, below) != generation)
+                {
+                  continue;
+                }
+                const float top = tops.At(descendant, below);
+                ASSERT_LE(reliefSlopeKnownTop(held, cell, float(1 << below), generation), top)
+                  << "level " << level << ", node " << i << ", " << j << ", generation "
+                  << generation << ", descendant " << x << ", " << y;
+                ++checked[generation];
+                if (generation == 2 || level == 1)
+                {
+                  largest = std::max(largest, top - held.top);
+                  const vec2 slot = level == 1
+                    ? min(2.0f * (descendant - 2.0f * node), vec2(2.0f, 2.0f))
+                    : min(descendant - 4.0f * node, vec2(3.0f, 3.0f));
+                  float& least = slotTop[int(slot.x) + 4 * int(slot.y)];
+                  least = std::min(least, top);
+                }
+              }
             }
           }
-          for (int slot = 0; slot < 4; ++slot)
+          for (int slot = 0; slot < 16; ++slot)
           {
+            const float decoded = reliefSlopeGrandchildTop(held, vec2(slot % 4, slot / 4));
             if (slotTop[slot] > 1.5f)
             {
-              // no child there (an axis with a single child): the node's own top, which
-              // the search may still ask for at the node's far side
-              EXPECT_EQ(decoded[slot], texel.x) << "level " << level << ", slot " << slot;
-              ++unfilled;
+              // no grandchild there (an axis with a single child): the node's own top; a
+              // level-1 node's cell's second slot a side is checked with the first
+              if (level > 1)
+              {
+                EXPECT_EQ(decoded, held.top) << "level " << level << ", slot " << slot;
+                ++unfilled;
+              }
               continue;
             }
-            ASSERT_LE(decoded[slot], slotTop[slot]) << "level " << level << ", node " << i
-                                                    << ", " << j << ", slot " << slot;
-            // within a step (under 2 / 31 of the largest offset, at least 2^-19) and the
-            // margin (2^-20 and a 1024th of a step)
-            EXPECT_GE(decoded[slot], slotTop[slot] - (largest / 15.5f * 1.01f + 3e-6f))
+            // within a step and its margin (a 1024th of it)
+            EXPECT_GE(decoded,
+              slotTop[slot] - 1.001f * std::max(largest * 2.0f / 15.0f, std::ldexp(1.0f, -19)))
               << "level " << level << ", node " << i << ", " << j << ", slot " << slot;
-            ++checked;
           }
         }
       }
     }
-    EXPECT_GT(checked, field.Width * field.Height / 3);
+    EXPECT_GT(checked[1], field.Width * field.Height / 4);
+    EXPECT_GT(checked[2], field.Width * field.Height / 4);
   }
-  EXPECT_GT(unfilled, 0); // 37x21's top level: one node over a level one node high
+  EXPECT_GT(unfilled, 0); // 37x21's top levels: an axis with a single child
 }
 
 TEST(ReliefSlopeMipmapFilter, BoxesHoldEveryGradientUnderTheirNode)
@@ -208,9 +240,10 @@ TEST(ReliefSlopeMipmapFilter, BoxesHoldEveryGradientUnderTheirNode)
         // the node holding the cell: the last node of a row takes the cells to the edge
         const vec2 node(std::min(cx >> level, slopes.Widths[level] - 1),
           std::min(cy >> level, slopes.Heights[level] - 1));
-        const vec4 texel = slopes.At(node, level);
-        ASSERT_EQ(texel.x, tops.At(node, level)) << "level " << level;
-        ASSERT_LE(texel.x, std::min(std::min(d00, d10), std::min(d01, d11)));
+        const uvec4 texel = slopes.At(node, level);
+        const float top = float(texel.x & 0xFFFFFu) * std::ldexp(1.0f, -20);
+        ASSERT_LE(top, tops.At(node, level)) << "level " << level;
+        ASSERT_GE(top, tops.At(node, level) - std::ldexp(1.0f, -20)) << "level " << level;
         const vec2 dx = reliefSlopeDecode(texel.y);
         const vec2 dy = reliefSlopeDecode(texel.z);
         for (float gx : { d10 - d00, d11 - d01 })
@@ -243,9 +276,9 @@ TEST(ReliefSlopeMipmapFilter, CodesRoundOutwardAndStayClose)
     const vec2 decoded = reliefSlopeDecode(vtkSlopeMipmapFilter::EncodeSlopes(low, high));
     ASSERT_LE(decoded.x, low);
     ASSERT_GE(decoded.y, high);
-    // within three codes (2 + rounding) of 128 an octave, or of the least code, 2^-15
-    EXPECT_LE(low - decoded.x, std::max(0.017 * std::abs(low), std::exp2(-14.0)));
-    EXPECT_LE(decoded.y - high, std::max(0.017 * std::abs(high), std::exp2(-14.0)));
+    // within three codes (2 + rounding) of 30 an octave, or of the least code, 2^-15
+    EXPECT_LE(low - decoded.x, std::max(0.073 * std::abs(low), std::exp2(-14.0)));
+    EXPECT_LE(decoded.y - high, std::max(0.073 * std::abs(high), std::exp2(-14.0)));
   }
   const vec2 zero = reliefSlopeDecode(vtkSlopeMipmapFilter::EncodeSlopes(0.0, 0.0));
   EXPECT_EQ(zero.x, 0.0f);

@@ -34,7 +34,7 @@ vec2 reliefConeDecode(vec2 stored, vec2 range)
 // The GPU's cone map, two bytes a cell, read as the radii are (vtkReliefSafetySearch.glsl).
 uniform vec2 reliefConeRange; // vtkConeStepMapFilter's maximum ratio and RATIO_OCTAVES
 #define RELIEF_CONE_STEP(cell) reliefConeDecode( \
-  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).rg, \
+  vec4(textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0)).rg, \
   reliefConeRange)
 #endif
 

@@ -5,7 +5,11 @@ uniform sampler2D reliefDepthTexture; // vtkReliefTextureFilter's depth, 16-bit
 #ifdef RELIEF_INPUT_NORMALS
 uniform sampler2D reliefNormalTexture; // (nx, ny) of the normal map given with the heights
 #endif
-uniform sampler2D reliefAccelerationTexture; // what the search method reads besides
+#ifdef RELIEF_ACCELERATION_CODES
+uniform usampler2D reliefAccelerationTexture; // the search's acceleration image, as integers
+#else
+uniform sampler2D reliefAccelerationTexture; // what the search method reads besides depths
+#endif
 uniform vec2 reliefTextureSize;    // texels per tile
 uniform float reliefNormalRatio;   // the filter's DepthToTexelRatio (input normals only)
 uniform float reliefDepthScale;    // s_z: world depth of depth 1; <= 0 disables the relief

@@ -13,14 +13,15 @@
 // described by vtkReliefSearchMethod's uniforms.
 uniform int reliefPyramidTop;
 uniform float reliefPyramidRows[32]; // first atlas row of each level above 0
-#define RELIEF_PYRAMID_TEXEL(node, level) texelFetch(reliefAccelerationTexture, \
-  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0)
+#define RELIEF_PYRAMID_TEXEL(node, level) vec4(texelFetch(reliefAccelerationTexture, \
+  ivec2(node) + (level == 0 ? ivec2(0) : ivec2(reliefTextureSize.x, reliefPyramidRows[level])), 0))
 #define RELIEF_PYRAMID_DEPTH(node, level) RELIEF_PYRAMID_TEXEL(node, level).r
 #define RELIEF_PYRAMID_TOP reliefPyramidTop
-// vtkSlopeMipmapFilter's atlas is uploaded without its level 0, which SlopeMipmap never
-// reads (it solves single cells from the height map): its other levels start at column 0
-#define RELIEF_SLOPE_NODE(node, level) \
-  texelFetch(reliefAccelerationTexture, ivec2(node) + ivec2(0, reliefPyramidRows[level]), 0)
+// vtkSlopeMipmapFilter's atlas is uploaded (as integers) without its level 0, which
+// SlopeMipmap never reads (it solves single cells from the height map): its other levels
+// start at column 0
+#define RELIEF_SLOPE_NODE(node, level) uvec4(texelFetch(reliefAccelerationTexture, \
+  ivec2(node) + ivec2(0, reliefPyramidRows[level]), 0))
 #endif
 
 // Upper bound on loop iterations, so a shader always terminates.

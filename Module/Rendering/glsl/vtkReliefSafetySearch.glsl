@@ -20,8 +20,9 @@
 // The GPU's radii, one texel per cell: read at the texel's centre with nearest filtering,
 // so that the sampler repeats the index (cheaper than texelFetch of mod(cell, size));
 // cells as far as 10^5 texels away still land within 0.01 texel.
+// (vec4(): the shader also compiles where another method's image is read as integers)
 #define RELIEF_SAFETY_RADIUS(cell) \
-  textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0).r
+  vec4(textureLod(reliefAccelerationTexture, ((cell) + 0.5) / reliefTextureSize, 0.0)).r
 #endif
 
 // The cell the ray enters at t: on a cell border the one ahead, so a jump that ends on

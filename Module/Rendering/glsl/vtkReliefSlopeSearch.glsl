@@ -11,8 +11,11 @@
 //      the top of the child at the exit, or else one read of the cell there, says whether,
 //      and a crossing is bracketed there;
 // otherwise down a level, where the ray reaches the node's top. A node's texel also holds its
-// children's tops: while it is in hand, a child the ray clears (by its top, or by the parent's
-// Lipschitz bound) is passed over without a read, so a read buys two levels' worth of tests.
+// sixteen grandchildren's tops, and so its children's: while it is in hand, a child or
+// grandchild the ray clears (by its top, or by the node's Lipschitz bound) is passed over
+// without a read, and the search goes down through a child it does not clear without reading
+// it, so one read buys three levels' worth of tests. Two texels are kept in hand, the last
+// one gone down into and the one before, for the siblings of the nodes under the first.
 // Single cells are solved as ExactDDA does. A bracket [above, below] holding one crossing is
 // closed by reading cells where Newton's estimate or, with the gap and its rate known at both
 // ends, a cubic Hermite interpolant's root puts it, within what the rates allow, each read
@@ -20,62 +23,114 @@
 // is it. Exact: every skip is proven, every hit solved from a point known above the field.
 // Shared with the CPU mirror; see vtkReliefCommon.glsl for the rules. Needs
 // vtkReliefGridSearch.glsl (its pyramid's levels) and vtkReliefSafetySearch.glsl
-// (reliefCellAfter) before it, and RELIEF_SLOPE_NODE(node, level): vec4 (least depth, packed
-// dD/dx bounds, packed dD/dy bounds, children's coded tops) of a node above level 0, unpacked
-// by reliefSlopeDecode and reliefSlopeChildTops (the GPU's in vtkReliefGridSearch.glsl).
+// (reliefCellAfter) before it, and RELIEF_SLOPE_NODE(node, level): the uvec4 of a node above
+// level 0 (vtkSlopeMipmapFilter::PackNode), unpacked by reliefSlopeNodeOf (the GPU's in
+// vtkReliefGridSearch.glsl).
 
-// One code of vtkSlopeMipmapFilter::EncodeSlopes: 2048 is 0, each code away from it one
-// 128th of an octave from 2^-15.
-float reliefSlopeValue(float code)
+// One 10-bit code of vtkSlopeMipmapFilter::EncodeSlopes: 512 is 0, each code away from it
+// one 30th of an octave from 2^-15.
+float reliefSlopeValue(uint code)
 {
-  float steps = code - 2048.0f;
-  return steps == 0.0f ? 0.0f : sign(steps) * exp2(abs(steps) / 128.0f - 15.0f);
+  float steps = float(code) - 512.0f;
+  return steps == 0.0f ? 0.0f : sign(steps) * exp2(abs(steps) / 30.0f - 15.0f);
 }
 
-// Two slope bounds packed as low * 4096 + high (exact integers in a float).
-vec2 reliefSlopeDecode(float codes)
+// Two slope bounds packed in the low 20 bits of `codes`: low + 1024 high.
+vec2 reliefSlopeDecode(uint codes)
 {
-  float low = floor(codes / 4096.0f);
-  return vec2(reliefSlopeValue(low), reliefSlopeValue(codes - low * 4096.0f));
-}
-
-// The least depths of a node's four children (slot x + 2 y) from the node's own, `top`, and
-// their codes (vtkSlopeMipmapFilter::EncodeChildTops): each at most the child's.
-// Integer parts are taken by multiplying with exact powers of two, never dividing (a GPU's
-// division may land just below an integer).
-vec4 reliefSlopeChildTops(float top, float codes)
-{
-  float exponent = floor(codes * (1.0f / 1048576.0f));
-  float rest = codes - exponent * 1048576.0f;
-  float unit = 1.0f / float(1 << (int(exponent) + 4)); // within the encoder's margin
-  vec4 tops;
-  float higher = floor(rest * (1.0f / 32.0f));
-  tops.x = top + (rest - 32.0f * higher) * unit;
-  rest = floor(higher * (1.0f / 32.0f));
-  tops.y = top + (higher - 32.0f * rest) * unit;
-  higher = floor(rest * (1.0f / 32.0f));
-  tops.z = top + (rest - 32.0f * higher) * unit;
-  tops.w = top + higher * unit;
-  return tops;
-}
-
-// A child's top from its node's children's tops (reliefSlopeChildTops): `slot` is the
-// child's offset from the node's first child, more than 1 in the last node's folded third
-// child (or where an axis of one node has a single child: its slot holds the node's own
-// top). Selects, where a variable index into a vector may go through memory.
-float reliefSlopeChildTop(vec4 tops, vec2 slot)
-{
-  return slot.y > 0.0f ? (slot.x > 0.0f ? tops.w : tops.z) : (slot.x > 0.0f ? tops.y : tops.x);
+  return vec2(reliefSlopeValue(codes & 1023u), reliefSlopeValue((codes >> 10u) & 1023u));
 }
 
 // The least and most rate of the gap along the ray (per unit of t) over a node whose
-// gradients lie in the box of `node`.
-vec2 reliefSlopeRates(vec4 node, ReliefGridRay grid)
+// texel (vtkSlopeMipmapFilter::PackNode) is `texel`.
+vec2 reliefSlopeRates(uvec4 texel, ReliefGridRay grid)
 {
-  vec2 x = reliefSlopeDecode(node.y) * grid.direction.x;
-  vec2 y = reliefSlopeDecode(node.z) * grid.direction.y;
+  vec2 x = reliefSlopeDecode(texel.y) * grid.direction.x;
+  vec2 y = reliefSlopeDecode(texel.z) * grid.direction.y;
   return vec2(min(x.x, x.y) + min(y.x, y.y) - grid.descent,
     max(x.x, x.y) + max(y.x, y.y) - grid.descent);
+}
+
+// A node's texel as the search holds it: its level (-1: none), its box of cells
+// (unwrapped: the tile's), its top, the least rate of the gap along the ray over it and its
+// grandchildren's coded tops (vtkSlopeMipmapFilter::EncodeGrandchildTops).
+struct ReliefSlopeNode
+{
+  int level;
+  vec2 low;
+  vec2 high;
+  float top;
+  float leastRate;
+  float step;  // the grandchildren's codes' unit
+  uvec2 codes; // codes 0 to 7 and 8 to 15, 4 bits each
+};
+
+ReliefSlopeNode reliefSlopeNone()
+{
+  ReliefSlopeNode none;
+  none.level = -1;
+  none.low = vec2(0.0f, 0.0f);
+  none.high = vec2(0.0f, 0.0f);
+  none.top = 0.0f;
+  none.leastRate = 0.0f;
+  none.step = 0.0f;
+  none.codes = uvec2(0u, 0u);
+  return none;
+}
+
+// The texel of vtkSlopeMipmapFilter::PackNode unpacked, but for its slopes (reliefSlopeRates):
+// bit fields are taken with shifts, and the top and the step are exact in a float.
+ReliefSlopeNode reliefSlopeNodeOf(uvec4 texel, int level, vec2 low, vec2 high, float leastRate)
+{
+  ReliefSlopeNode held;
+  held.level = level;
+  held.low = low;
+  held.high = high;
+  held.top = float(texel.x & 1048575u) * (1.0f / 1048576.0f);
+  held.leastRate = leastRate;
+  held.step = 1.0f / float(1u << (((texel.x >> 20u) & 15u) + 4u));
+  held.codes =
+    uvec2(texel.w, (texel.y >> 20u) | ((texel.z >> 20u) << 12u) | ((texel.x >> 24u) << 24u));
+  return held;
+}
+
+// The top of the grandchild in `slot` (offsets from the first, at most 3) of a node in hand:
+// at most the grandchild's. Code x + 4 y lies at bit 4 (x + 4 y) of the 64 of `codes`.
+float reliefSlopeGrandchildTop(ReliefSlopeNode held, vec2 slot)
+{
+  int y = int(slot.y);
+  uint word = y < 2 ? held.codes.x : held.codes.y;
+  return held.top + float((word >> uint(4 * int(slot.x) + 16 * (y & 1))) & 15u) * held.step;
+}
+
+// The top of the child at `offset` (from the first, at most 1: the last node's folded third
+// child shares the second's slots) of a node in hand: the least of its four grandchildren's
+// codes, which lie in one word at bits 0, 4, 16 and 20 from 8 offset.x.
+float reliefSlopeChildTop(ReliefSlopeNode held, vec2 offset)
+{
+  uint quad = (offset.y > 0.0f ? held.codes.y : held.codes.x) >> uint(8.0f * offset.x);
+  uint least = min(min(quad & 15u, (quad >> 4u) & 15u), min((quad >> 16u) & 15u, (quad >> 20u) & 15u));
+  return held.top + float(least) * held.step;
+}
+
+// 1 where the node in hand is the parent of the node of `level` holding `cell`, 2 where it
+// is its grandparent, else 0: nodes nest, so the node in hand is an ancestor where its box
+// holds the cell.
+int reliefSlopeGeneration(ReliefSlopeNode held, vec2 cell, int level)
+{
+  bool holds = cell.x >= held.low.x && cell.y >= held.low.y && cell.x < held.high.x &&
+    cell.y < held.high.y;
+  return holds && held.level > level && held.level <= level + 2 ? held.level - level : 0;
+}
+
+// The top of a node (its first cell `low`, `span` cells a side) from its parent's or
+// grandparent's texel (`generation`): its offset in nodes from the held node's first
+// descendant of its level picks the slot.
+float reliefSlopeKnownTop(ReliefSlopeNode held, vec2 low, float span, int generation)
+{
+  vec2 offset = (low - held.low) / span;
+  return generation == 2 ? reliefSlopeGrandchildTop(held, min(offset, vec2(3.0f, 3.0f)))
+                         : reliefSlopeChildTop(held, min(offset, vec2(1.0f, 1.0f)));
 }
 
 // The gap and its rate (per unit of t) at t, on the patch of `cell`.
@@ -222,12 +277,9 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
   float t = 0.0f;
   float gapLow = 0.0f; // a lower bound of the gap at t
   int samples = 0;
-  // the texel in hand: its node, level (-1: none) and tile, its children's tops and rates
-  vec2 heldNode = vec2(0.0f, 0.0f);
-  int heldLevel = -1;
-  vec2 heldOrigin = vec2(0.0f, 0.0f);
-  vec4 heldTops = vec4(0.0f, 0.0f, 0.0f, 0.0f);
-  vec2 heldRates = vec2(0.0f, 0.0f);
+  // the texels in hand: the last node gone down into, and the one before it
+  ReliefSlopeNode inner = reliefSlopeNone();
+  ReliefSlopeNode outer = reliefSlopeNone();
   // the outcome, acted on after the loop so that the loop body stays small (every fragment
   // of a SIMD group runs through all of it): a hit at tHit, or a crossing bracketed in
   // [bracketStart, tHit] by the cell at tHit (its corners read), in a node of `rates`
@@ -251,14 +303,30 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
     float zOut = grid.depth + tOut * grid.descent;
     bool over = false;
     float nextLow = 0.0f;
-    if (level + 1 == heldLevel && origin == heldOrigin &&
-      reliefPyramidParent(node, level) == heldNode)
+    // a texel in hand that knows the node's top
+    ReliefSlopeNode known = inner;
+    int generation = reliefSlopeGeneration(inner, cell, level);
+    if (generation == 0)
     {
-      // the parent's texel in hand: the node's top, and the parent's Lipschitz bound
-      float top = reliefSlopeChildTop(heldTops, node - 2.0f * heldNode);
-      float bound = gapLow + heldRates.x * (tOut - t);
+      known = outer;
+      generation = reliefSlopeGeneration(outer, cell, level);
+    }
+    if (generation > 0)
+    {
+      float top = reliefSlopeKnownTop(known, low, span, generation);
+      float bound = gapLow + known.leastRate * (tOut - t);
       over = zOut < top || bound > 0.0f;
       nextLow = max(max(top - zOut, bound), 0.0f);
+      if (!over && generation == 1 && level > 0)
+      {
+        // down without a read, where the ray reaches the node's top: the texel in hand
+        // knows its children's tops too
+        float tDown = max(t, min((top - grid.depth) / grid.descent, tOut));
+        gapLow = max(gapLow + known.leastRate * (tDown - t), 0.0f);
+        t = tDown;
+        level -= 1;
+        continue;
+      }
     }
     // what the step reads: at level 0 the cell itself (its corners hold all a node would);
     // above, the node's texel and, in case (d), the cell at the node's exit
@@ -268,20 +336,20 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
     if (!over && level > 0)
     {
       samples += 1;
-      vec4 texel = RELIEF_SLOPE_NODE(node, level);
+      uvec4 texel = RELIEF_SLOPE_NODE(node, level);
       rates = reliefSlopeRates(texel, grid);
+      ReliefSlopeNode read = reliefSlopeNodeOf(texel, level, low, high, rates.x);
       float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
-      over = zOut < texel.x || rates.x >= 0.0f || bound > 0.0f;
-      nextLow = max(max(texel.x - zOut, bound), 0.0f);
-      // the children's tops, needed only where the ray goes on into the node
-      vec4 tops = over ? vec4(0.0f, 0.0f, 0.0f, 0.0f) : reliefSlopeChildTops(texel.x, texel.w);
+      over = zOut < read.top || rates.x >= 0.0f || bound > 0.0f;
+      nextLow = max(max(read.top - zOut, bound), 0.0f);
       if (!over && rates.y < 0.0f)
       {
         // (d): a gap that only falls and is still open at the exit was open all along:
-        // the exit's child says so when the ray clears its top there, else the exit's
+        // the exit's grandchild says so when the ray clears its top there, else the exit's
         // cell, the node's whatever side of the border rounding puts the exit
         readCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
-        float exitTop = reliefSlopeChildTop(tops, floor((readCell - low) / (0.5f * span)));
+        float exitTop = reliefSlopeGrandchildTop(
+          read, min(floor((readCell - low) / (0.25f * span)), vec2(3.0f, 3.0f)));
         over = zOut < exitTop;
         nextLow = max(exitTop - zOut, nextLow);
         readsCell = !over;
@@ -289,14 +357,11 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
       if (!over && !readsCell)
       {
         // down, where the ray reaches the node's top, the gap bound carried there, with
-        // the node's texel in hand for its children (a texel passed over stays out of
-        // hand, so that its parent's still serves its siblings)
-        heldNode = node;
-        heldLevel = level;
-        heldOrigin = origin;
-        heldTops = tops;
-        heldRates = rates;
-        float tDown = max(t, min((texel.x - grid.depth) / grid.descent, tOut));
+        // the node's texel in hand (a texel passed over stays out of hand, so that the
+        // ones in hand still serve its siblings)
+        outer = inner;
+        inner = read;
+        float tDown = max(t, min((read.top - grid.depth) / grid.descent, tOut));
         gapLow = max(gapLow + rates.x * (tDown - t), 0.0f);
         t = tDown;
         level -= 1;
