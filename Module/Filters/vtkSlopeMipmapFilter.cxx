@@ -189,16 +189,15 @@ void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* val
   {
     int origin[2], size[2], below[2], belowSize[2];
     GetLevelPlacement(width, height, level, origin, size);
-    // a level-1 node's grandchildren slots hold its cells, each over two slots a side
+    // a level-1 node's slots hold its cells, each over two slots a side
     const int grandLevel = std::max(level - 2, 0);
     GetLevelPlacement(width, height, grandLevel, below, belowSize);
-    auto topAt = [&](int x, int y) {
-      return values[(static_cast<size_t>(below[1] + y) * atlasSize[0] + below[0] + x) * Components];
+    auto texel = [&](const int place[2], int x, int y) {
+      const size_t index = static_cast<size_t>(place[1] + y) * atlasSize[0] + place[0] + x;
+      return values + index * Components;
     };
-    // the grandchildren (or a level-1 node's cells) of node `node` along one axis, each
-    // with its first slot and its last: the search's slot is min(n - 4 node, 3), a child's
-    // cell's min(2 (c - 2 node), 2) and the next
-    auto slotsOf = [&](int node, int axisSize, int& first, int& last) {
+    // the grandchildren (a level-1 node's cells) of node `node` along one axis
+    auto descendantRange = [&](int node, int axisSize, int& first, int& last) {
       int firstChild, lastChild;
       GetChildRange(node, axisSize, level, firstChild, lastChild);
       if (level == 1)
@@ -211,6 +210,9 @@ void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* val
       GetChildRange(firstChild, axisSize, level - 1, first, unused);
       GetChildRange(lastChild, axisSize, level - 1, unused, last);
     };
+    // the slots of descendant n of node `node` along one axis, as the search finds them: a
+    // grandchild's min(n - 4 node, 3), a level-1 node's cell's min(2 (n - 2 node), 2) and
+    // the next (reliefSlopeKnownTop)
     auto slotRange = [&](int n, int node, int& firstSlot, int& lastSlot) {
       if (level == 1)
       {
@@ -225,13 +227,12 @@ void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* val
         for (int j = begin; j < end; ++j)
         {
           int firstRow, lastRow;
-          slotsOf(j, height, firstRow, lastRow);
+          descendantRange(j, height, firstRow, lastRow);
           for (int i = 0; i < size[0]; ++i)
           {
             int firstColumn, lastColumn;
-            slotsOf(i, width, firstColumn, lastColumn);
-            float* node =
-              values + (static_cast<size_t>(origin[1] + j) * atlasSize[0] + origin[0] + i) * Components;
+            descendantRange(i, width, firstColumn, lastColumn);
+            float* node = texel(origin, i, j);
             // a slot no grandchild fills (an axis with a single child) holds the node's own
             // top, which proves nothing more
             double slotTops[16];
@@ -244,7 +245,7 @@ void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* val
               {
                 int firstX, lastX;
                 slotRange(x, i, firstX, lastX);
-                const double grandTop = topAt(x, y);
+                const double grandTop = texel(below, x, y)[0];
                 for (int sy = firstY; sy <= lastY; ++sy)
                 {
                   for (int sx = firstX; sx <= lastX; ++sx)

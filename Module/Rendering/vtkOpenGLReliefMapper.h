@@ -114,9 +114,10 @@ public:
    *   highest points (Tevs et al. 2008), then intersects cells exactly. Exact; about
    *   log n steps.
    * - SlopeMipmap: MaximumMipmap whose nodes also bound the slopes under them and hold
-   *   their children's tops (vtkSlopeMipmapFilter), so that one node read may also prove
-   *   that the ray cannot come down to the field before the node's exit, or meets it at
-   *   most once there, and passes over the children it clears without reading them.
+   *   their grandchildren's tops (vtkSlopeMipmapFilter), so that one node read may also
+   *   prove that the ray cannot come down to the field before the node's exit, or meets
+   *   it at most once there, and passes over the children and grandchildren it clears,
+   *   and goes down through the children it does not, without reading them.
    *   Exact; the fewest samples of the exact methods from 30 degrees and the shortest
    *   worst cases, but more work per sample (Documentation/methods.md).
    * The exact methods read the full-resolution field and ignore the step counts.
@@ -183,7 +184,7 @@ public:
   /**
    * The acceleration the Automatic search steps long straight runs over: ConeStep's cone
    * map (CONE_STEP, default: two bytes a texel, and the fastest frames measured on
-   * llvmpipe but on the largest maps) or SlopeMipmap's pyramid (SLOPE_MIPMAP: 14 to 50% fewer height samples at
+   * llvmpipe) or SlopeMipmap's pyramid (SLOPE_MIPMAP: 18 to 63% fewer height samples at
    * 45 and 80 degrees and the same tolerance, for eight bytes a texel and more work a
    * sample, which pays where texture reads cost the most; Documentation/methods.md). Any
    * other value is refused with an error. A precomputed acceleration image (port 2) must

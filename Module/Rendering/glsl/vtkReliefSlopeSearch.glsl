@@ -109,7 +109,8 @@ float reliefSlopeGrandchildTop(ReliefSlopeNode held, vec2 slot)
 float reliefSlopeChildTop(ReliefSlopeNode held, vec2 offset)
 {
   uint quad = (offset.y > 0.0f ? held.codes.y : held.codes.x) >> uint(8.0f * offset.x);
-  uint least = min(min(quad & 15u, (quad >> 4u) & 15u), min((quad >> 16u) & 15u, (quad >> 20u) & 15u));
+  uint least =
+    min(min(quad & 15u, (quad >> 4u) & 15u), min((quad >> 16u) & 15u, (quad >> 20u) & 15u));
   return held.top + float(least) * held.step;
 }
 
