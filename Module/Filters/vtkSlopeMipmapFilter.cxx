@@ -45,7 +45,11 @@ unsigned int SlopeCode(double value, bool up)
 // The 20-bit code of a top, rounded down: the search may take a node to be no higher.
 unsigned int TopCode(double top)
 {
-  const double scaled = std::floor(std::ldexp(std::min(std::max(top, 0.0), 1.0), TopBits));
+  if (!(top > 0.0))
+  {
+    return 0u; // also NaN (a precomputed image's): the highest top, which proves nothing
+  }
+  const double scaled = std::floor(std::ldexp(std::min(top, 1.0), TopBits));
   return static_cast<unsigned int>(std::min(scaled, std::ldexp(1.0, TopBits) - 1.0));
 }
 
@@ -53,7 +57,10 @@ unsigned int TopCode(double top)
 // then codes 0 to 15.
 void UnpackGrandchildren(const double words[3], unsigned int& exponent, unsigned int codes[16])
 {
-  auto bitsOf = [](double word) { return static_cast<unsigned int>(word); };
+  // a word out of range (a precomputed image's) codes every grandchild as the node's top
+  auto bitsOf = [](double word) {
+    return word >= 0.0 && word < 16777216.0 ? static_cast<unsigned int>(word) : 0u;
+  };
   const unsigned int first = bitsOf(words[0]);
   exponent = first & 15u;
   for (int k = 0; k < 5; ++k)
@@ -210,17 +217,22 @@ void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* val
       GetChildRange(firstChild, axisSize, level - 1, first, unused);
       GetChildRange(lastChild, axisSize, level - 1, unused, last);
     };
-    // the slots of descendant n of node `node` along one axis, as the search finds them: a
-    // grandchild's min(n - 4 node, 3), a level-1 node's cell's min(2 (n - 2 node), 2) and
-    // the next (reliefSlopeKnownTop)
-    auto slotRange = [&](int n, int node, int& firstSlot, int& lastSlot) {
+    // the slots of descendant n of node `node` along one axis, as the search reads them:
+    // a level-1 node's cell's min(2 (n - 2 node), 2) and the next; a grandchild's own,
+    // min(n - 4 node, 3), and where its parent's two (reliefSlopeChildTop) miss it, as
+    // when a single child has three children, also the nearer of those
+    auto slotRange = [&](int n, int node, int axisSize, int& firstSlot, int& lastSlot) {
       if (level == 1)
       {
         firstSlot = std::min(2 * (n - 2 * node), 2);
         lastSlot = firstSlot + 1;
         return;
       }
-      firstSlot = lastSlot = std::min(n - 4 * node, 3);
+      const int child = std::min(n / 2, GetLevelSize(axisSize, level - 1) - 1);
+      const int childSlot = 2 * std::min(child - 2 * node, 1);
+      const int own = std::min(n - 4 * node, 3);
+      firstSlot = std::min(own, childSlot + 1);
+      lastSlot = std::max(own, childSlot);
     };
     this->ForRows(size[1], 8, 0.8 + 0.2 * (level - 1) / top, 0.8 + 0.2 * level / top,
       [&](int begin, int end) {
@@ -240,11 +252,11 @@ void vtkSlopeMipmapFilter::EncodeGrandchildren(int width, int height, float* val
             for (int y = firstRow; y <= lastRow; ++y)
             {
               int firstY, lastY;
-              slotRange(y, j, firstY, lastY);
+              slotRange(y, j, height, firstY, lastY);
               for (int x = firstColumn; x <= lastColumn; ++x)
               {
                 int firstX, lastX;
-                slotRange(x, i, firstX, lastX);
+                slotRange(x, i, width, firstX, lastX);
                 const double grandTop = texel(below, x, y)[0];
                 for (int sy = firstY; sy <= lastY; ++sy)
                 {

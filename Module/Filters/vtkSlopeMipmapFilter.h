@@ -47,8 +47,9 @@ public:
   /**
    * The least depths of a node's grandchildren, slot x + 4 y (the grandchild at offset x
    * along u and y along v from the first; the last node of a row folds its grandchildren
-   * past the fourth into offset 3; a level-1 node's slots hold its cells, each over two
-   * slots a side), coded relative to the node's decoded top (DecodedTop) as the shader
+   * past the fourth into offset 3, and a single child's third child also into offset 1,
+   * which the child's top is read from; a level-1 node's slots hold its cells, each over
+   * two slots a side), coded relative to the node's decoded top (DecodedTop) as the shader
    * decodes them (reliefSlopeGrandchildTop): 4-bit codes c on one step 2^-(e + 4), e the
    * finest of 0 to 15 on which fifteen steps hold the largest offset, each rounded down
    * with a margin of a 1024th of a step for the GPU's rounding of the step.

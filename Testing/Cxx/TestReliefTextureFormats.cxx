@@ -112,7 +112,7 @@ int TestReliefTextureFormats(int, char*[])
     { vtkOpenGLReliefMapper::MAXIMUM_MIPMAP, 4L * atlas[0] * atlas[1] },
     { vtkOpenGLReliefMapper::AUTOMATIC, 2L * Width * Height }, // the cone map
     { vtkOpenGLReliefMapper::ROBUST_BINARY, 4L * Width * Height }, // SafetyRadius's radii
-    // top, two boxes, children's tops; without level 0, which the search reads from the
+    // top, two boxes, grandchildren's tops; without level 0, which the search reads from the
     // height map
     { vtkOpenGLReliefMapper::SLOPE_MIPMAP, 16L * (atlas[0] - Width) * atlas[1] },
   };

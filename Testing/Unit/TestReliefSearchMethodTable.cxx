@@ -55,12 +55,11 @@ TEST(ReliefSearchMethodTable, EveryMethodIsDescribedOnceAndFoundWhereItIsRead)
       << method->Name << ": no " << signature << " in the shader sources";
     EXPECT_NE(ReliefCpuMirror::FindSearch(method->Function), nullptr)
       << method->Name << ": the CPU mirror has no " << method->Function;
-    // the slope pyramid's codes are read through an integer sampler, the rest as floats
+    // SlopeMipmap's pyramid is read through an integer sampler, every other image as floats
     EXPECT_EQ(method->GetShaderDefine(),
       std::string("#define RELIEF_SEARCH ") + method->Function + "\n" +
-        (method->Encoding == vtkReliefSearchMethod::SLOPE_CODES
-            ? "#define RELIEF_ACCELERATION_CODES\n"
-            : ""));
+        (id == vtkOpenGLReliefMapper::SLOPE_MIPMAP ? "#define RELIEF_ACCELERATION_CODES\n" : ""))
+      << method->Name;
     auto filter = vtk::TakeSmartPointer(
       method->NewAccelerationFilter ? method->NewAccelerationFilter() : nullptr);
     EXPECT_EQ(filter != nullptr, method->NeedsAcceleration()) << method->Name;

@@ -135,8 +135,10 @@ TEST(ReliefSlopeMipmapFilter, KnownTopsLieAtOrAboveEveryChildAndGrandchild)
   // node's top as its parent's and its grandparent's texel tell it (the shader's own
   // reliefSlopeKnownTop) is at most its own, and a grandchild's within a step of it
   int unfilled = 0;
-  for (const DepthField& field :
-    { RandomField(37, 21, 5, 0.0f, 1.0f), RandomField(19, 26, 3, 0.5f, 0.5f + 1e-6f) })
+  // 3x29, 6x16 and 12x40: a node with a single child along an axis whose child has three
+  for (const DepthField& field : { RandomField(37, 21, 5, 0.0f, 1.0f),
+         RandomField(19, 26, 3, 0.5f, 0.5f + 1e-6f), RandomField(3, 29, 7, 0.0f, 1.0f),
+         RandomField(6, 16, 11, 0.0f, 1.0f), RandomField(12, 40, 13, 0.0f, 1.0f) })
   {
     const DepthPyramid tops = PyramidOf(field);
     const SlopePyramid slopes = SlopesOf(field);
@@ -181,11 +183,29 @@ TEST(ReliefSlopeMipmapFilter, KnownTopsLieAtOrAboveEveryChildAndGrandchild)
                 if (generation == 2 || level == 1)
                 {
                   largest = std::max(largest, top - held.top);
-                  const vec2 slot = level == 1
-                    ? min(2.0f * (descendant - 2.0f * node), vec2(2.0f, 2.0f))
-                    : min(descendant - 4.0f * node, vec2(3.0f, 3.0f));
-                  float& least = slotTop[int(slot.x) + 4 * int(slot.y)];
-                  least = std::min(least, top);
+                  // its own slot (a cell's first), and where its parent's two slots miss
+                  // it (a single child with three children), the nearer of those too
+                  int first[2], last[2];
+                  const int at[2] = { x, y };
+                  const int of[2] = { i, j };
+                  const int sizes[2] = { slopes.Widths[level - 1], slopes.Heights[level - 1] };
+                  for (int axis = 0; axis < 2; ++axis)
+                  {
+                    const int own = level == 1 ? std::min(2 * (at[axis] - 2 * of[axis]), 2)
+                                               : std::min(at[axis] - 4 * of[axis], 3);
+                    const int parentSlot = level == 1
+                      ? own
+                      : 2 * std::min(std::min(at[axis] / 2, sizes[axis] - 1) - 2 * of[axis], 1);
+                    first[axis] = std::min(own, parentSlot + 1);
+                    last[axis] = level == 1 ? own : std::max(own, parentSlot);
+                  }
+                  for (int sy = first[1]; sy <= last[1]; ++sy)
+                  {
+                    for (int sx = first[0]; sx <= last[0]; ++sx)
+                    {
+                      slotTop[sx + 4 * sy] = std::min(slotTop[sx + 4 * sy], top);
+                    }
+                  }
                 }
               }
             }

@@ -8,7 +8,7 @@
 //  (c) gLow + least * (tOut - t) > 0: the gap cannot fall to 0 before the exit (a Lipschitz
 //      bound, after segment tracing, Galin et al. 2020): over it, with that bound carried on;
 //  (d) most < 0: the gap only falls, so the ray meets the field at most once in the node:
-//      the top of the child at the exit, or else one read of the cell there, says whether,
+//      the top of the grandchild at the exit, or else one read of the cell there, says whether,
 //      and a crossing is bracketed there;
 // otherwise down a level, where the ray reaches the node's top. A node's texel also holds its
 // sixteen grandchildren's tops, and so its children's: while it is in hand, a child or
