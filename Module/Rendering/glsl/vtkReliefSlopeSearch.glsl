@@ -126,10 +126,11 @@ int reliefSlopeGeneration(ReliefSlopeNode held, vec2 cell, int level)
 
 // The top of a node (its first cell `low`, `span` cells a side) from its parent's or
 // grandparent's texel (`generation`): its offset in nodes from the held node's first
-// descendant of its level picks the slot.
+// descendant of its level, a whole number (rounded, should a division land below it),
+// picks the slot.
 float reliefSlopeKnownTop(ReliefSlopeNode held, vec2 low, float span, int generation)
 {
-  vec2 offset = (low - held.low) / span;
+  vec2 offset = floor((low - held.low) / span + 0.5f);
   return generation == 2 ? reliefSlopeGrandchildTop(held, min(offset, vec2(3.0f, 3.0f)))
                          : reliefSlopeChildTop(held, min(offset, vec2(1.0f, 1.0f)));
 }
