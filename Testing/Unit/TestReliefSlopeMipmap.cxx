@@ -135,6 +135,7 @@ TEST(ReliefSlopeMipmapFilter, KnownTopsLieAtOrAboveEveryChildAndGrandchild)
   // node's top as its parent's and its grandparent's texel tell it (the shader's own
   // reliefSlopeKnownTop) is at most its own, and a grandchild's within a step of it
   int unfilled = 0;
+  const DepthField* previousField = CurrentField; // set back when done: these fields go
   // 3x29, 6x16 and 12x40: a node with a single child along an axis whose child has three
   for (const DepthField& field : { RandomField(37, 21, 5, 0.0f, 1.0f),
          RandomField(19, 26, 3, 0.5f, 0.5f + 1e-6f), RandomField(3, 29, 7, 0.0f, 1.0f),
@@ -236,6 +237,7 @@ TEST(ReliefSlopeMipmapFilter, KnownTopsLieAtOrAboveEveryChildAndGrandchild)
     EXPECT_GT(checked[2], field.Width * field.Height / 4);
   }
   EXPECT_GT(unfilled, 0); // 37x21's top levels: an axis with a single child
+  CurrentField = previousField;
 }
 
 TEST(ReliefSlopeMipmapFilter, BoxesHoldEveryGradientUnderTheirNode)
