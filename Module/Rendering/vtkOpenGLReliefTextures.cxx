@@ -44,11 +44,11 @@ vtkIdType MipmappedBytes(int width, int height, int texelBytes)
   return bytes * texelBytes;
 }
 
-// A repeating 2D texture of `values` (one to four components; unsigned integers are read
-// as integers) in `internalFormat`, read
-// with `filter`: vtkTextureObject::LinearMipmapLinear (trilinear, its mipmaps made),
-// Linear (bilinear, at full resolution) or Nearest (texel by texel: the acceleration
-// images, one texel per cell, repeating as the height map does).
+// A repeating 2D texture of `values` (one to four components; four unsigned integers are
+// read as integers) in `internalFormat`, read with `filter`:
+// vtkTextureObject::LinearMipmapLinear (trilinear, its mipmaps made), Linear (bilinear, at
+// full resolution) or Nearest (texel by texel: the acceleration images, one texel per
+// cell, repeating as the height map does).
 bool UploadTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window,
   const int dimensions[3], vtkDataArray* values, unsigned int internalFormat, int filter)
 {
