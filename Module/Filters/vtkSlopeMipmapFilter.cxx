@@ -53,27 +53,29 @@ unsigned int TopCode(double top)
   return static_cast<unsigned int>(std::min(scaled, std::ldexp(1.0, TopBits) - 1.0));
 }
 
-// The coded grandchildren of the output's three words (EncodeGrandchildTops): the exponent,
-// then codes 0 to 15.
+// Where code k of the output's three words lies (EncodeGrandchildTops): after the 4-bit
+// exponent, codes 0 to 4 in the first word, 5 to 10 in the second, 11 to 15 in the third.
+void GrandchildCodePlace(int k, int& word, int& shift)
+{
+  word = k < 5 ? 0 : (k < 11 ? 1 : 2);
+  shift = k < 5 ? 4 + 4 * k : 4 * (k < 11 ? k - 5 : k - 11);
+}
+
+// The coded grandchildren of the output's three words: the exponent, then codes 0 to 15.
 void UnpackGrandchildren(const double words[3], unsigned int& exponent, unsigned int codes[16])
 {
   // a word out of range (a precomputed image's) codes every grandchild as the node's top
-  auto bitsOf = [](double word) {
-    return word >= 0.0 && word < 16777216.0 ? static_cast<unsigned int>(word) : 0u;
-  };
-  const unsigned int first = bitsOf(words[0]);
-  exponent = first & 15u;
-  for (int k = 0; k < 5; ++k)
+  unsigned int bits[3];
+  for (int w = 0; w < 3; ++w)
   {
-    codes[k] = (first >> (4 + 4 * k)) & 15u;
+    bits[w] = words[w] >= 0.0 && words[w] < 16777216.0 ? static_cast<unsigned int>(words[w]) : 0u;
   }
-  for (int k = 0; k < 6; ++k)
+  exponent = bits[0] & 15u;
+  for (int k = 0; k < 16; ++k)
   {
-    codes[5 + k] = (bitsOf(words[1]) >> (4 * k)) & 15u;
-  }
-  for (int k = 0; k < 5; ++k)
-  {
-    codes[11 + k] = (bitsOf(words[2]) >> (4 * k)) & 15u;
+    int word, shift;
+    GrandchildCodePlace(k, word, shift);
+    codes[k] = (bits[word] >> shift) & 15u;
   }
 }
 }
@@ -116,8 +118,8 @@ void vtkSlopeMipmapFilter::EncodeGrandchildTops(
     const unsigned int code = offset > 0.0
       ? static_cast<unsigned int>(std::min(std::floor(offset / step), GrandchildCodes - 1.0))
       : 0u;
-    const int word = k < 5 ? 0 : (k < 11 ? 1 : 2);
-    const int shift = k < 5 ? 4 + 4 * k : 4 * (k < 11 ? k - 5 : k - 11);
+    int word, shift;
+    GrandchildCodePlace(k, word, shift);
     packed[word] |= code << shift;
   }
   for (int w = 0; w < 3; ++w)
