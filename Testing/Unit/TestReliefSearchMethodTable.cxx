@@ -102,9 +102,9 @@ TEST(ReliefSearchMethodTable, AutomaticStepsOverTheConeMapOrTheSlopePyramid)
   using Mapper = vtkOpenGLReliefMapper;
   const vtkReliefSearchMethod* automatic = vtkReliefSearchMethod::Get(Mapper::AUTOMATIC);
   const vtkReliefSearchMethod* slope = vtkReliefSearchMethod::Get(Mapper::SLOPE_MIPMAP);
-  EXPECT_EQ(vtkReliefSearchMethod::GetAutomatic(vtkOpenGLReliefMapper::CONE_STEP), automatic);
+  EXPECT_EQ(vtkReliefSearchMethod::GetAutomatic(Mapper::CONE_STEP), automatic);
   const vtkReliefSearchMethod* overSlopes =
-    vtkReliefSearchMethod::GetAutomatic(vtkOpenGLReliefMapper::SLOPE_MIPMAP);
+    vtkReliefSearchMethod::GetAutomatic(Mapper::SLOPE_MIPMAP);
   ASSERT_NE(overSlopes, nullptr);
   EXPECT_NE(overSlopes, automatic);
   // Automatic still, reading SlopeMipmap's image: one pyramid for both, built once
@@ -118,8 +118,8 @@ TEST(ReliefSearchMethodTable, AutomaticStepsOverTheConeMapOrTheSlopePyramid)
               "(ReliefRay ray, int linearSteps, int refinementSteps)"),
     std::string::npos);
   EXPECT_NE(ReliefCpuMirror::FindSearch(overSlopes->Function), nullptr);
-  for (int id : { -1, int(vtkOpenGLReliefMapper::LINEAR_BINARY),
-         int(vtkOpenGLReliefMapper::MAXIMUM_MIPMAP), int(vtkOpenGLReliefMapper::AUTOMATIC) })
+  for (int id :
+    { -1, int(Mapper::LINEAR_BINARY), int(Mapper::MAXIMUM_MIPMAP), int(Mapper::AUTOMATIC) })
   {
     EXPECT_EQ(vtkReliefSearchMethod::GetAutomatic(id), nullptr) << id;
   }
