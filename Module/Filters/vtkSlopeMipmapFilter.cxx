@@ -53,6 +53,20 @@ unsigned int TopCode(double top)
   return static_cast<unsigned int>(std::min(scaled, std::ldexp(1.0, TopBits) - 1.0));
 }
 
+// The 4-bit code of a grandchild whose top lies `offset` below its node's decoded top, on
+// the step 2^-(exponent + 4): rounded down, and clamped to the largest code. The top and
+// every code's offset are exact in a float, and so is their sum (at most 21 significant
+// bits), but a GPU may take the step as a reciprocal a little too large: a code never
+// reaches within a 1024th of a step of the grandchild's top.
+unsigned int GrandchildCode(double offset, int exponent)
+{
+  const double step = std::ldexp(1.0, -(exponent + 4));
+  const double below = offset - step / 1024.0;
+  return below > 0.0
+    ? static_cast<unsigned int>(std::min(std::floor(below / step), GrandchildCodes - 1.0))
+    : 0u;
+}
+
 // Where code k of the output's three words lies (EncodeGrandchildTops): after the 4-bit
 // exponent, codes 0 to 4 in the first word, 5 to 10 in the second, 11 to 15 in the third.
 void GrandchildCodePlace(int k, int& word, int& shift)
@@ -96,31 +110,30 @@ void vtkSlopeMipmapFilter::EncodeGrandchildTops(
   double top, const double grandchildTops[16], float words[3])
 {
   const double base = DecodedTop(top);
-  double largest = 0.0;
-  for (int k = 0; k < 16; ++k)
+  // the step that rounds the sixteen tops down the least in all: a finer one holds the low
+  // tops closer but clamps the high ones to the largest code
+  int exponent = 0;
+  double leastRounding = 0.0;
+  for (int candidate = 0; candidate < GrandchildExponents; ++candidate)
   {
-    largest = std::max(largest, grandchildTops[k] - base);
+    double rounding = 0.0;
+    for (int k = 0; k < 16; ++k)
+    {
+      rounding += grandchildTops[k] - base - GrandchildCode(grandchildTops[k] - base, candidate) *
+          std::ldexp(1.0, -(candidate + 4));
+    }
+    if (candidate == 0 || rounding < leastRounding)
+    {
+      exponent = candidate;
+      leastRounding = rounding;
+    }
   }
-  int exponent = GrandchildExponents - 1;
-  while (exponent > 0 && std::ldexp(GrandchildCodes - 1, -(exponent + 4)) < largest)
-  {
-    --exponent;
-  }
-  const double step = std::ldexp(1.0, -(exponent + 4));
-  // the top and every code's offset are exact in a float, and so is their sum (at most
-  // 21 significant bits), but a GPU may take the step as a reciprocal a little too large:
-  // a code never reaches within a 1024th of a step of the grandchild's top
-  const double margin = step / 1024.0;
   unsigned int packed[3] = { static_cast<unsigned int>(exponent), 0u, 0u };
   for (int k = 0; k < 16; ++k)
   {
-    const double offset = grandchildTops[k] - base - margin;
-    const unsigned int code = offset > 0.0
-      ? static_cast<unsigned int>(std::min(std::floor(offset / step), GrandchildCodes - 1.0))
-      : 0u;
     int word, shift;
     GrandchildCodePlace(k, word, shift);
-    packed[word] |= code << shift;
+    packed[word] |= GrandchildCode(grandchildTops[k] - base, exponent) << shift;
   }
   for (int w = 0; w < 3; ++w)
   {

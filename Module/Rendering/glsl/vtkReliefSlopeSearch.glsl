@@ -168,21 +168,29 @@ float reliefHermiteRoot(float g0, float d0, float g1, float d1)
   return s;
 }
 
+// Where the ray enters and leaves `cell`: (entry, exit), unclamped.
+vec2 reliefSlopeCellSpan(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverseRun)
+{
+  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
+  vec2 entries = reliefCrossings(
+    grid, vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y), signs, inverseRun);
+  vec2 exits = reliefCrossings(grid, cell + ahead, signs, inverseRun);
+  return vec2(max(entries.x, entries.y), min(exits.x, exits.y));
+}
+
 // The crossing in [above, below], where the gap falls all along (at a rate within
 // `rates`, rates.y < 0), so there is one, and every point before it is above the field:
-// gap and rate at `below` known (gapBelow, gap < 0). Each probe reads the cell where the
-// Hermite interpolant (gap and rate known at both ends) or Newton (from below) puts the
-// crossing, bounded by the rates, and solves it over its part of the bracket: the crossing,
-// or a new end with its gap and rate known exactly; when two probes have not halved the
-// bracket, a bisection follows. A bracket no longer than `endSpan` in t ends the search at
-// its far end (the Automatic search's tolerance; 0: exact).
+// gap and rate known at `below` (gapBelow, gap < 0) and, where gapAbove.x > 0, at `above`.
+// Each probe reads the cell where the Hermite interpolant (gap and rate known at both ends)
+// or Newton (from below) puts the crossing, bounded by the rates, and solves it over its
+// part of the bracket: the crossing, or a new end with its gap and rate known exactly; when
+// two probes have not halved the bracket, a bisection follows. A bracket no longer than
+// `endSpan` in t ends the search at its far end (the Automatic search's tolerance; 0: exact).
 ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, float below,
-  vec2 gapBelow, vec2 rates, int samples, float endSpan)
+  vec2 gapAbove, vec2 gapBelow, vec2 rates, int samples, float endSpan)
 {
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
-  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
-  vec2 gapAbove = vec2(-1.0f, 0.0f); // gap and rate at `above`, once a probe knows them
   float lastWidth = 2.0f * (below - above);
   float olderWidth = lastWidth;
   for (int i = 0; i < 64 && above < below; ++i)
@@ -209,11 +217,9 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
     olderWidth = lastWidth;
     lastWidth = width;
     vec2 cell = floor(reliefGridAt(grid, probe));
-    vec2 behind = vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y);
-    vec2 entries = reliefCrossings(grid, behind, signs, inverseRun);
-    vec2 exits = reliefCrossings(grid, cell + ahead, signs, inverseRun);
-    float tIn = min(max(max(entries.x, entries.y), above), probe);
-    float tOut = max(min(min(exits.x, exits.y), below), probe);
+    vec2 span = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
+    float tIn = min(max(span.x, above), probe);
+    float tOut = max(min(span.y, below), probe);
     vec4 depths = RELIEF_CELL_DEPTHS(cell);
     samples += 1;
     float t = reliefCellIntersection(grid, cell, depths, tIn, tOut);
@@ -243,27 +249,103 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
   return walk.hit ? walk : reliefGridHit(ray, grid, below, true, walk.samples);
 }
 
-// The crossing bracketed in [above, below], where `cell` (its corners read) holds the ray
-// on or below the field at `below`: that cell first, back to where the ray entered it (no
-// further read when it holds the crossing), then reliefSlopeRefine, ending as it does.
-ReliefHit reliefSlopeBracket(ReliefRay ray, ReliefGridRay grid, float above, float below,
-  vec2 cell, vec4 depths, vec2 rates, int samples, float endSpan)
+// A node where the gap only falls (case (d)), searched by reading cells: its exit and box,
+// the gap's rates over it, the cell the search entered it by (to climb out from), the last
+// point known above the field and the gap and its rate there (x <= 0: not known), and the
+// point the next read is at, in the cell there within [probeLow, probeHigh).
+struct ReliefSlopeFall
+{
+  bool searching;
+  float exit;
+  vec2 low;
+  vec2 high;
+  vec2 rates;
+  vec2 entryCell;
+  float above;
+  vec2 gapAbove;
+  float probe;
+  vec2 probeLow;
+  vec2 probeHigh;
+};
+
+ReliefSlopeFall reliefSlopeFallNone()
+{
+  ReliefSlopeFall none;
+  none.searching = false;
+  none.exit = 0.0f;
+  none.low = vec2(0.0f, 0.0f);
+  none.high = vec2(0.0f, 0.0f);
+  none.rates = vec2(0.0f, 0.0f);
+  none.entryCell = vec2(0.0f, 0.0f);
+  none.above = 0.0f;
+  none.gapAbove = vec2(-1.0f, 0.0f);
+  none.probe = 0.0f;
+  none.probeLow = vec2(0.0f, 0.0f);
+  none.probeHigh = vec2(0.0f, 0.0f);
+  return none;
+}
+
+// Case (d) in the node in hand `held`, entered by `cell` at t, left at tOut, its gap's rates
+// `rates`. The first read: three quarters of the way into the first grandchild along the ray
+// whose top the ray does not clear, from where the ray reaches that top (no crossing lies
+// before it), so that Newton reaches less far than from the node's exit. At the exit where
+// grandchildren are not whole cells (nodes under four cells a side), or where the node is
+// within `endSpan`, as a bracket would end there.
+ReliefSlopeFall reliefSlopeFallInto(ReliefSlopeNode held, ReliefGridRay grid, vec2 cell, float t,
+  float tOut, vec2 rates, float endSpan)
 {
   vec2 signs = reliefStepSigns(grid);
   vec2 inverseRun = reliefInverseRun(grid);
-  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
-  vec2 behind = vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y);
-  vec2 entries = reliefCrossings(grid, behind, signs, inverseRun);
-  float tIn = min(max(max(entries.x, entries.y), above), below);
-  float back = reliefCellIntersection(grid, cell, depths, tIn, below);
-  vec2 gap = reliefPatchGap(grid, cell, depths, tIn);
-  // no crossing in the cell (the exit's gap was 0 within rounding), or one inside it, or
-  // the bracket all in it: the hit is found
-  if (back < 0.0f || back > tIn || tIn <= above || gap.x >= 0.0f)
+  ReliefSlopeFall fall = reliefSlopeFallNone();
+  fall.searching = true;
+  fall.exit = tOut;
+  fall.low = held.low;
+  fall.high = held.high;
+  fall.rates = rates;
+  fall.entryCell = cell;
+  fall.above = t;
+  fall.probe = tOut;
+  fall.probeLow = held.low;
+  fall.probeHigh = held.high;
+  float quarter = float(1 << held.level) * 0.25f;
+  bool walks = quarter >= 1.0f && tOut - t > endSpan;
+  float from = t;
+  // a ray crosses at most seven of the sixteen grandchildren
+  for (int k = 0; k < 8 && walks && from < tOut; ++k)
   {
-    return reliefGridHit(ray, grid, back >= 0.0f ? back : below, true, samples);
+    vec2 at = min(max(reliefCellAfter(grid, from, signs, inverseRun), held.low), held.high - 1.0f);
+    vec2 slot = min(floor((at - held.low) / quarter), vec2(3.0f, 3.0f));
+    vec2 slotLow = held.low + slot * quarter;
+    vec2 slotHigh = vec2(slot.x >= 3.0f ? held.high.x : min(slotLow.x + quarter, held.high.x),
+      slot.y >= 3.0f ? held.high.y : min(slotLow.y + quarter, held.high.y));
+    vec2 exits = reliefBoxExits(grid, slotLow, slotHigh, signs, inverseRun);
+    float slotOut = min(max(min(exits.x, exits.y), from), tOut);
+    float top = reliefSlopeGrandchildTop(held, slot);
+    if (grid.depth + slotOut * grid.descent >= top || slotOut >= tOut)
+    {
+      float reaches = min(max((top - grid.depth) / grid.descent, from), slotOut);
+      fall.probe = reaches + 0.75f * (slotOut - reaches);
+      fall.probeLow = slotLow;
+      fall.probeHigh = slotHigh;
+      return fall;
+    }
+    from = slotOut;
   }
-  return reliefSlopeRefine(ray, grid, above, tIn, gap, rates, samples, endSpan);
+  return fall;
+}
+
+// The level the search goes on at past a node of `level` that holds `cell`, left at tOut:
+// one up where the cell after it has another parent, or lies in another tile.
+int reliefSlopeLevelPast(ReliefGridRay grid, vec2 cell, float tOut, int level, vec2 size)
+{
+  vec2 next = reliefCellAfter(grid, tOut, reliefStepSigns(grid), reliefInverseRun(grid));
+  vec2 tile = floor(vec2(cell.x / size.x, cell.y / size.y));
+  vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
+  float parentSpan = float(2 << level);
+  bool climbs = floor(next.x / size.x) != tile.x || floor(next.y / size.y) != tile.y ||
+    floor((next.x - origin.x) / parentSpan) != floor((cell.x - origin.x) / parentSpan) ||
+    floor((next.y - origin.y) / parentSpan) != floor((cell.y - origin.y) / parentSpan);
+  return climbs ? min(level + 1, RELIEF_PYRAMID_TOP) : level;
 }
 
 // The search; a bracket no longer than `endSpan` in t ends it at its far end (0: exact).
@@ -282,16 +364,66 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
   // the texels in hand: the last node gone down into, and the one before it
   ReliefSlopeNode inner = reliefSlopeNone();
   ReliefSlopeNode outer = reliefSlopeNone();
+  ReliefSlopeFall fall = reliefSlopeFallNone();
   // the outcome, acted on after the loop so that the loop body stays small (every fragment
   // of a SIMD group runs through all of it): a hit at tHit, or a crossing bracketed in
-  // [bracketStart, tHit] by the cell at tHit (its corners read), in a node of `rates`
+  // [bracketStart, tHit], with the gaps and rates there, in a node of `bracketRates`
   float tHit = -1.0f;
   float bracketStart = -1.0f;
-  vec2 bracketCell = vec2(0.0f, 0.0f);
-  vec4 bracketDepths = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  vec2 bracketGapAbove = vec2(-1.0f, 0.0f);
+  vec2 bracketGapBelow = vec2(0.0f, 0.0f);
   vec2 bracketRates = vec2(0.0f, 0.0f);
   for (int i = 0; i < RELIEF_MAX_ITERATIONS && t < 1.0f; ++i)
   {
+    if (fall.searching)
+    {
+      // (d): one cell read, solved over its part of the node; with one crossing in the node,
+      // a zero is it, a cell entered below the field brackets it, and a cell left above the
+      // field tells the gap and its rate there exactly
+      vec2 cell =
+        min(max(floor(reliefGridAt(grid, fall.probe)), fall.probeLow), fall.probeHigh - 1.0f);
+      vec2 span = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
+      float cellIn = min(max(span.x, fall.above), fall.probe);
+      float cellOut = max(min(span.y, fall.exit), fall.probe);
+      samples += 1;
+      vec4 depths = RELIEF_CELL_DEPTHS(cell);
+      float crossing = reliefCellIntersection(grid, cell, depths, cellIn, cellOut);
+      if (crossing >= 0.0f)
+      {
+        vec2 gapIn = reliefPatchGap(grid, cell, depths, cellIn);
+        bool bracketed = crossing <= cellIn && cellIn > fall.above && gapIn.x < 0.0f;
+        tHit = bracketed ? cellIn : crossing;
+        bracketStart = bracketed ? fall.above : -1.0f;
+        bracketGapAbove = fall.gapAbove;
+        bracketGapBelow = gapIn;
+        bracketRates = fall.rates;
+        break;
+      }
+      fall.above = cellOut;
+      fall.gapAbove = reliefPatchGap(grid, cell, depths, cellOut);
+      fall.gapAbove.x = max(fall.gapAbove.x, 1e-30f);
+      float bound = fall.gapAbove.x + fall.rates.x * (fall.exit - fall.above);
+      if (fall.above >= fall.exit || bound > 0.0f)
+      {
+        // no crossing in the node: past it
+        fall.searching = false;
+        level = reliefSlopeLevelPast(grid, fall.entryCell, fall.exit, level, size);
+        t = fall.exit;
+        gapLow = max(bound, 0.0f);
+        continue;
+      }
+      // Newton from above, where the rates allow a crossing; the exit where a bracket
+      // would end within endSpan
+      float soonest = fall.above - fall.gapAbove.x / fall.rates.x;
+      float latest = min(fall.above - fall.gapAbove.x / fall.rates.y, fall.exit);
+      float estimate =
+        fall.gapAbove.y < 0.0f ? fall.above - fall.gapAbove.x / fall.gapAbove.y : latest;
+      fall.probe = fall.exit - fall.above <= endSpan ? fall.exit
+                                                     : min(max(estimate, soonest), latest);
+      fall.probeLow = fall.low;
+      fall.probeHigh = fall.high;
+      continue;
+    }
     vec2 cell = reliefCellAfter(grid, t, signs, inverseRun);
     vec2 tile = floor(vec2(cell.x / size.x, cell.y / size.y));
     vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
@@ -330,16 +462,11 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
         continue;
       }
     }
-    // what the step reads: at level 0 the cell itself (its corners hold all a node would);
-    // above, the node's texel and, in case (d), the cell at the node's exit
-    bool readsCell = !over && level == 0;
-    vec2 readCell = cell;
-    vec2 rates = vec2(0.0f, 0.0f);
     if (!over && level > 0)
     {
       samples += 1;
       uvec4 texel = RELIEF_SLOPE_NODE(node, level);
-      rates = reliefSlopeRates(texel, grid);
+      vec2 rates = reliefSlopeRates(texel, grid);
       ReliefSlopeNode read = reliefSlopeNodeOf(texel, level, low, high, rates.x);
       float bound = gapLow + rates.x * (tOut - t); // the gap at the exit is at least this
       over = zOut < read.top || rates.x >= 0.0f || bound > 0.0f;
@@ -347,16 +474,21 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
       if (!over && rates.y < 0.0f)
       {
         // (d): a gap that only falls and is still open at the exit was open all along:
-        // the exit's grandchild says so when the ray clears its top there, else the exit's
-        // cell, the node's whatever side of the border rounding puts the exit
-        readCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
+        // the exit's grandchild says so when the ray clears its top there (the exit's cell
+        // the node's whatever side of the border rounding puts the exit); else cells are
+        // read, from the first the node's grandchildren point to
+        vec2 exitCell = min(max(floor(reliefGridAt(grid, tOut)), low), high - 1.0f);
         float exitTop = reliefSlopeGrandchildTop(
-          read, min(floor((readCell - low) / (0.25f * span)), vec2(3.0f, 3.0f)));
+          read, min(floor((exitCell - low) / (0.25f * span)), vec2(3.0f, 3.0f)));
         over = zOut < exitTop;
         nextLow = max(exitTop - zOut, nextLow);
-        readsCell = !over;
+        if (!over)
+        {
+          fall = reliefSlopeFallInto(read, grid, cell, t, tOut, rates, endSpan);
+          continue;
+        }
       }
-      if (!over && !readsCell)
+      if (!over)
       {
         // down, where the ray reaches the node's top, the gap bound carried there, with
         // the node's texel in hand (a texel passed over stays out of hand, so that the
@@ -370,38 +502,26 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
         continue;
       }
     }
-    if (readsCell)
+    if (!over)
     {
+      // a cell (level 0: its corners hold all a node would), solved from t
       samples += 1;
-      vec4 depths = RELIEF_CELL_DEPTHS(readCell);
-      float gapOut = reliefPatchGap(grid, readCell, depths, tOut).x;
-      // a cell is solved from t; in (d) a gap closed at the exit brackets the one crossing
-      tHit = level == 0 ? reliefCellIntersection(grid, cell, depths, t, tOut)
-                        : (gapOut <= 0.0f ? tOut : -1.0f);
+      vec4 depths = RELIEF_CELL_DEPTHS(cell);
+      tHit = reliefCellIntersection(grid, cell, depths, t, tOut);
       if (tHit >= 0.0f)
       {
-        bracketStart = level == 0 ? -1.0f : t;
-        bracketCell = readCell;
-        bracketDepths = depths;
-        bracketRates = rates;
         break;
       }
-      over = true;
-      nextLow = max(gapOut, 0.0f);
+      nextLow = max(reliefPatchGap(grid, cell, depths, tOut).x, 0.0f);
     }
     // past the node, and up a level when the next node has another parent
-    vec2 next = reliefCellAfter(grid, tOut, signs, inverseRun);
-    float parentSpan = 2.0f * span;
-    bool climbs = floor(next.x / size.x) != tile.x || floor(next.y / size.y) != tile.y ||
-      floor((next.x - origin.x) / parentSpan) != floor((cell.x - origin.x) / parentSpan) ||
-      floor((next.y - origin.y) / parentSpan) != floor((cell.y - origin.y) / parentSpan);
-    level = climbs ? min(level + 1, RELIEF_PYRAMID_TOP) : level;
+    level = reliefSlopeLevelPast(grid, cell, tOut, level, size);
     t = tOut;
     gapLow = nextLow;
   }
   if (bracketStart >= 0.0f)
   {
-    return reliefSlopeBracket(ray, grid, bracketStart, tHit, bracketCell, bracketDepths,
+    return reliefSlopeRefine(ray, grid, bracketStart, tHit, bracketGapAbove, bracketGapBelow,
       bracketRates, samples, endSpan);
   }
   return tHit >= 0.0f ? reliefGridHit(ray, grid, tHit, true, samples)
