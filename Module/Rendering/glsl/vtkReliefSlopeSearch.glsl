@@ -8,8 +8,10 @@
 //  (c) gLow + least * (tOut - t) > 0: the gap cannot fall to 0 before the exit (a Lipschitz
 //      bound, after segment tracing, Galin et al. 2020): over it, with that bound carried on;
 //  (d) most < 0: the gap only falls, so the ray meets the field at most once in the node:
-//      the top of the grandchild at the exit, or else one read of the cell there, says whether,
-//      and a crossing is bracketed there;
+//      none where the ray clears the top of the grandchild at the exit; else the node's cells
+//      are read, the first in the first grandchild whose top the ray does not clear, the next
+//      where Newton from the last (left above the field) puts the crossing, until one holds
+//      it, or is entered below the field (a bracket), or the gap's bound clears the rest;
 // otherwise down a level, where the ray reaches the node's top. A node's texel also holds its
 // sixteen grandchildren's tops, and so its children's: while it is in hand, a child or
 // grandchild the ray clears (by its top, or by the node's Lipschitz bound) is passed over
@@ -407,9 +409,10 @@ int reliefSlopeLevelPast(ReliefGridRay grid, vec2 cell, float tOut, int level, v
 }
 
 // The search; a bracket no longer than `endSpan` in t ends it at its far end (0: exact).
-// Each pass of the loop reads one node's texel or one cell, or none where the texels in hand
-// tell enough; a node of (d) and a cell of level 0 are read in the same pass as the texel
-// that leads to them, so that a SIMD group of fragments runs each part of the body once.
+// Each pass of the loop takes one node, by the texels in hand or by its own, read, and reads
+// a cell where one is needed: one of level 0, or one of a node of (d), the first in the same
+// pass as the node's texel. Cells are read at one place in the body, as a SIMD group of
+// fragments runs all of it whichever branches they take (llvmpipe does).
 ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
 {
   vec2 size = RELIEF_DEPTH_SIZE;
