@@ -51,8 +51,9 @@ public:
    * which the child's top is read from; a level-1 node's slots hold its cells, each over
    * two slots a side), coded relative to the node's decoded top (DecodedTop) as the shader
    * decodes them (reliefSlopeGrandchildTop): 4-bit codes c on one step 2^-(e + 4), e the
-   * finest of 0 to 15 on which fifteen steps hold the largest offset, each rounded down
-   * with a margin of a 1024th of a step for the GPU's rounding of the step.
+   * one of 0 to 15 that rounds the sixteen least in all (a finer step holds the low tops
+   * closer and clamps the high ones to code 15), each rounded down with a margin of a
+   * 1024th of a step for the GPU's rounding of the step.
    * `words`: e and codes 0 to 4, codes 5 to 10 and codes 11 to 15, 4 bits each, in three
    * exact integers.
    */

@@ -112,6 +112,7 @@ TEST_F(ReliefAutomaticSearch, SpendsLeastWhereTheReliefIsBelowTheToleranceAndWal
 {
   Use(0);
   const ReliefRay steep = reliefViewRay(vec2(0.3f, 0.6f), vec3(0.01f, 0.005f, 1.0f));
+  // (a ray on which ConeStep and SlopeMipmap take different samples, for the last check)
   const ReliefRay oblique = reliefViewRay(vec2(0.3f, 0.65f), vec3(0.3f, 0.2f, 1.0f));
   // within the tolerance: one secant step between the ray's ends
   EXPECT_EQ(reliefSearchAutomatic(WithScreenRun(oblique, 0.8f), 0, 0).samples, 3);

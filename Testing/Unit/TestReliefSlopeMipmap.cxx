@@ -252,8 +252,9 @@ TEST(ReliefSlopeMipmapFilter, KnownTopsLieAtOrAboveEveryChildAndGrandchild)
             rounding += slotTop[slot] - decoded;
             ++filled;
           }
-          // in all, no further below than on the finest step that holds the largest
-          // offset, each within that step and its margin (a 1024th of it)
+          // in all, at most what the finest step that holds the largest offset rounds them
+          // (each within that step and its margin, a 1024th of it): the encoder picks the
+          // step that rounds them least
           EXPECT_LE(rounding,
             filled * 1.001f * std::max(largest * 2.0f / 15.0f, std::ldexp(1.0f, -19)))
             << "level " << level << ", node " << i << ", " << j;

@@ -9,9 +9,10 @@
 //      bound, after segment tracing, Galin et al. 2020): over it, with that bound carried on;
 //  (d) most < 0: the gap only falls, so the ray meets the field at most once in the node:
 //      none where the ray clears the top of the grandchild at the exit; else the node's cells
-//      are read, the first in the first grandchild whose top the ray does not clear, the next
-//      where Newton from the last (left above the field) puts the crossing, until one holds
-//      it, or is entered below the field (a bracket), or the gap's bound clears the rest;
+//      are read, the first in the first grandchild whose top the ray does not clear (of the
+//      three after where it reaches the node's top; else at the exit), the next where Newton
+//      from the last (left above the field) puts the crossing, until one holds it, or is
+//      entered below the field (a bracket), or the gap's bound clears the rest;
 // otherwise down a level, where the ray reaches the node's top. A node's texel also holds its
 // sixteen grandchildren's tops, and so its children's: while it is in hand, a child or
 // grandchild the ray clears (by its top, or by the node's Lipschitz bound) is passed over
@@ -219,9 +220,9 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
     olderWidth = lastWidth;
     lastWidth = width;
     vec2 cell = floor(reliefGridAt(grid, probe));
-    vec2 span = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
-    float tIn = min(max(span.x, above), probe);
-    float tOut = max(min(span.y, below), probe);
+    vec2 cellSpan = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
+    float tIn = min(max(cellSpan.x, above), probe);
+    float tOut = max(min(cellSpan.y, below), probe);
     vec4 depths = RELIEF_CELL_DEPTHS(cell);
     samples += 1;
     float t = reliefCellIntersection(grid, cell, depths, tIn, tOut);
@@ -253,8 +254,9 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
 
 // A node where the gap only falls (case (d)), searched by reading cells: its exit and box,
 // the gap's rates over it, the cell the search entered it by (to climb out from), the last
-// point known above the field and the gap and its rate there (x <= 0: not known), and the
-// point the next read is at, in the cell there within [probeLow, probeHigh).
+// point known above the field and the gap and its rate there (x <= 0: not known), the point
+// the next read is at, in the cell there within [probeLow, probeHigh), and the widths of
+// the span the last two reads left a crossing in (a bisection when two have not halved it).
 struct ReliefSlopeFall
 {
   bool searching;
@@ -268,6 +270,8 @@ struct ReliefSlopeFall
   float probe;
   vec2 probeLow;
   vec2 probeHigh;
+  float lastWidth;
+  float olderWidth;
 };
 
 ReliefSlopeFall reliefSlopeFallNone()
@@ -284,6 +288,8 @@ ReliefSlopeFall reliefSlopeFallNone()
   none.probe = 0.0f;
   none.probeLow = vec2(0.0f, 0.0f);
   none.probeHigh = vec2(0.0f, 0.0f);
+  none.lastWidth = 2.0f;
+  none.olderWidth = 2.0f;
   return none;
 }
 
@@ -304,16 +310,15 @@ struct ReliefSlopeWalk
 // not clear its top, the read goes three quarters of the way into it from where the ray
 // reaches that top (no crossing lies before it), so that Newton reaches less far than from
 // the node's exit; else on to the next grandchild along the ray.
-ReliefSlopeWalk reliefSlopeWalkStep(
-  ReliefSlopeWalk walk, ReliefSlopeNode held, ReliefGridRay grid, float tOut, float quarter)
+ReliefSlopeWalk reliefSlopeWalkStep(ReliefSlopeWalk walk, ReliefSlopeNode held,
+  ReliefGridRay grid, vec2 signs, vec2 inverseRun, float tOut, float quarter)
 {
-  vec2 signs = reliefStepSigns(grid);
   vec2 slotLow = held.low + walk.slot * quarter;
   vec2 slotHigh = vec2(walk.slot.x >= 3.0f ? held.high.x : slotLow.x + quarter,
     walk.slot.y >= 3.0f ? held.high.y : slotLow.y + quarter);
   vec2 borders = reliefCrossings(grid,
     vec2(signs.x > 0.0f ? slotHigh.x : slotLow.x, signs.y > 0.0f ? slotHigh.y : slotLow.y),
-    signs, reliefInverseRun(grid));
+    signs, inverseRun);
   float slotOut = min(max(min(borders.x, borders.y), walk.from), tOut);
   float top = reliefSlopeGrandchildTop(held, walk.slot);
   bool stops = !walk.found && (grid.depth + slotOut * grid.descent >= top || slotOut >= tOut);
@@ -339,8 +344,8 @@ ReliefSlopeWalk reliefSlopeWalkStep(
 // time of none, three unrolled 1.2 times; seven saved 0.5% of the samples). Else, and where
 // grandchildren are not whole cells (nodes under four cells a side) or the node lies
 // within `endSpan` (as a bracket would end there), at the node's exit.
-ReliefSlopeFall reliefSlopeFallInto(ReliefSlopeNode held, ReliefGridRay grid, vec2 cell, float t,
-  float tOut, vec2 rates, float endSpan)
+ReliefSlopeFall reliefSlopeFallInto(ReliefSlopeNode held, ReliefGridRay grid, vec2 signs,
+  vec2 inverseRun, vec2 cell, float t, float tOut, vec2 rates, float endSpan)
 {
   ReliefSlopeFall fall = reliefSlopeFallNone();
   fall.searching = true;
@@ -360,17 +365,16 @@ ReliefSlopeFall reliefSlopeFallInto(ReliefSlopeNode held, ReliefGridRay grid, ve
   }
   ReliefSlopeWalk walk;
   walk.from = max(t, min((held.top - grid.depth) / grid.descent, tOut));
-  vec2 at = min(max(reliefCellAfter(grid, walk.from, reliefStepSigns(grid), reliefInverseRun(grid)),
-                  held.low),
-    held.high - 1.0f);
+  vec2 at =
+    min(max(reliefCellAfter(grid, walk.from, signs, inverseRun), held.low), held.high - 1.0f);
   walk.slot = min(floor((at - held.low) / quarter), vec2(3.0f, 3.0f));
   walk.found = false;
   walk.probe = tOut;
   walk.probeLow = held.low;
   walk.probeHigh = held.high;
-  walk = reliefSlopeWalkStep(walk, held, grid, tOut, quarter);
-  walk = reliefSlopeWalkStep(walk, held, grid, tOut, quarter);
-  walk = reliefSlopeWalkStep(walk, held, grid, tOut, quarter);
+  walk = reliefSlopeWalkStep(walk, held, grid, signs, inverseRun, tOut, quarter);
+  walk = reliefSlopeWalkStep(walk, held, grid, signs, inverseRun, tOut, quarter);
+  walk = reliefSlopeWalkStep(walk, held, grid, signs, inverseRun, tOut, quarter);
   fall.probe = walk.probe;
   fall.probeLow = walk.probeLow;
   fall.probeHigh = walk.probeHigh;
@@ -505,7 +509,11 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
             read, min(floor((exitCell - low) / (0.25f * span)), vec2(3.0f, 3.0f)));
           over = zOut < exitTop;
           nextLow = max(exitTop - zOut, nextLow);
-          fall = over ? fall : reliefSlopeFallInto(read, grid, cell, t, tOut, rates, endSpan);
+          if (!over)
+          {
+            fall = reliefSlopeFallInto(
+              read, grid, signs, inverseRun, cell, t, tOut, rates, endSpan);
+          }
         }
         else if (!over)
         {
@@ -535,11 +543,13 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
       // one cell read, solved over its part of the node: with one crossing in the node, a
       // zero is it, a cell entered below the field brackets it, and a cell left above the
       // field tells the gap and its rate there exactly
-      vec2 cell =
-        min(max(floor(reliefGridAt(grid, fall.probe)), fall.probeLow), fall.probeHigh - 1.0f);
-      vec2 span = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
-      float cellIn = min(max(span.x, fall.above), fall.probe);
-      float cellOut = max(min(span.y, fall.exit), fall.probe);
+      // the cell the ray enters at the probe (on a border the one ahead, so that a probe
+      // at the last cell's exit reads the next), within the probe's box for rounding
+      vec2 cell = min(max(reliefCellAfter(grid, fall.probe, signs, inverseRun), fall.probeLow),
+        fall.probeHigh - 1.0f);
+      vec2 cellSpan = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
+      float cellIn = min(max(cellSpan.x, fall.above), fall.probe);
+      float cellOut = max(min(cellSpan.y, fall.exit), fall.probe);
       samples += 1;
       vec4 depths = RELIEF_CELL_DEPTHS(cell);
       float crossing = reliefCellIntersection(grid, cell, depths, cellIn, cellOut);
@@ -558,21 +568,30 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
       fall.gapAbove = reliefPatchGap(grid, cell, depths, cellOut);
       fall.gapAbove.x = max(fall.gapAbove.x, 1e-30f);
       float bound = fall.gapAbove.x + fall.rates.x * (fall.exit - fall.above);
-      // no crossing in the node: past it; else Newton from above, where the rates allow a
-      // crossing (the exit where a bracket would end within endSpan)
+      // no crossing in the node: past it
       fall.searching = fall.above < fall.exit && bound <= 0.0f;
       passes = !fall.searching;
       passCell = fall.entryCell;
       passExit = fall.exit;
       passLow = max(bound, 0.0f);
-      float soonest = fall.above - fall.gapAbove.x / fall.rates.x;
-      float latest = min(fall.above - fall.gapAbove.x / fall.rates.y, fall.exit);
-      float estimate =
-        fall.gapAbove.y < 0.0f ? fall.above - fall.gapAbove.x / fall.gapAbove.y : latest;
-      fall.probe = fall.exit - fall.above <= endSpan ? fall.exit
-                                                     : min(max(estimate, soonest), latest);
-      fall.probeLow = fall.low;
-      fall.probeHigh = fall.high;
+      if (fall.searching)
+      {
+        // else Newton from above, where the rates allow a crossing (rates.x <= rates.y < 0
+        // in a falling node); a bisection when two reads have not halved that span; the exit
+        // where a bracket would end within endSpan
+        float soonest = fall.above - fall.gapAbove.x / fall.rates.x;
+        float latest = min(fall.above - fall.gapAbove.x / fall.rates.y, fall.exit);
+        float estimate =
+          fall.gapAbove.y < 0.0f ? fall.above - fall.gapAbove.x / fall.gapAbove.y : latest;
+        float width = latest - fall.above;
+        estimate = width > 0.5f * fall.olderWidth ? 0.5f * (soonest + latest) : estimate;
+        fall.olderWidth = fall.lastWidth;
+        fall.lastWidth = width;
+        fall.probe = fall.exit - fall.above <= endSpan ? fall.exit
+                                                       : min(max(estimate, soonest), latest);
+        fall.probeLow = fall.low;
+        fall.probeHigh = fall.high;
+      }
     }
     if (passes)
     {
