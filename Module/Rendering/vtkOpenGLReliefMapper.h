@@ -184,7 +184,7 @@ public:
   /**
    * The acceleration the Automatic search steps long straight runs over: ConeStep's cone
    * map (CONE_STEP, default: two bytes a texel, and the fastest frames measured on
-   * llvmpipe) or SlopeMipmap's pyramid (SLOPE_MIPMAP: 18 to 63% fewer height samples at
+   * llvmpipe) or SlopeMipmap's pyramid (SLOPE_MIPMAP: 30 to 64% fewer height samples at
    * 45 and 80 degrees and the same tolerance, for eight bytes a texel and more work a
    * sample, which pays where texture reads cost the most; Documentation/methods.md). Any
    * other value is refused with an error. A precomputed acceleration image (port 2) must
