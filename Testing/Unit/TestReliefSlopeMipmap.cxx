@@ -34,6 +34,15 @@ protected:
     AllSlopes = nullptr;
   }
   static void Use(const Scene& scene) { CurrentSlopes = &AllSlopes->at(scene.Name); }
+  // The 16-bit terrain as the mirror's field, pyramid and slope pyramid.
+  static void UseTerrain()
+  {
+    const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
+      [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
+    CurrentField = &terrain.Field;
+    CurrentPyramid = &terrain.Pyramid;
+    Use(terrain);
+  }
   static std::vector<Scene>* AllScenes;
   static std::map<std::string, SlopePyramid>* AllSlopes;
 };
@@ -73,22 +82,25 @@ TEST_F(ReliefSlopeMipmap, KeepsItsHitsOnGrazingRaysThousandsOfCellsLong)
   ExpectGrazingHits(*AllScenes, "SlopeMipmap", &SlopeMipmap, &Use);
 }
 
+// The samples a search takes per ray over RaysAt80Degrees(seed) on the mirror's field.
+double SamplesPerRayAt80Degrees(
+  ReliefHit (*search)(ReliefRay, int, int), int linearSteps, int refinementSteps, unsigned seed)
+{
+  long samples = 0;
+  for (const ReliefRay& ray : RaysAt80Degrees(seed))
+  {
+    samples += search(ray, linearSteps, refinementSteps).samples;
+  }
+  return samples / 2000.0;
+}
+
 TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanMaximumMipmapAtGrazingAngles)
 {
-  const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
-    [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
-  CurrentField = &terrain.Field;
-  CurrentPyramid = &terrain.Pyramid;
-  Use(terrain);
-  long mipmap = 0;
-  long slopes = 0;
-  for (const ReliefRay& ray : RaysAt80Degrees(31))
-  {
-    mipmap += reliefSearchMaximumMipmap(ray, 0, 0).samples;
-    slopes += reliefSearchSlopeMipmap(ray, 0, 0).samples;
-  }
-  std::cout << "terrain at 80 degrees: MaximumMipmap " << mipmap / 2000.0
-            << " samples per ray, SlopeMipmap " << slopes / 2000.0 << "\n";
+  UseTerrain();
+  const double mipmap = SamplesPerRayAt80Degrees(&reliefSearchMaximumMipmap, 0, 0, 31);
+  const double slopes = SamplesPerRayAt80Degrees(&reliefSearchSlopeMipmap, 0, 0, 31);
+  std::cout << "terrain at 80 degrees: MaximumMipmap " << mipmap
+            << " samples per ray, SlopeMipmap " << slopes << "\n";
   EXPECT_LT(slopes, 0.8 * mipmap);
 }
 
@@ -97,20 +109,11 @@ TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanLinearBinaryAtEightyDegrees)
   // issue 20's bound, with a margin, on the terrain: a node where the gap only falls is
   // searched from a read near the crossing (in the first grandchild the ray does not
   // clear); from a first read at the node's exit it took 0.998 of LinearBinary's samples
-  const Scene& terrain = *std::find_if(AllScenes->begin(), AllScenes->end(),
-    [](const Scene& scene) { return scene.Name == "16-bit terrain"; });
-  CurrentField = &terrain.Field;
-  CurrentPyramid = &terrain.Pyramid;
-  Use(terrain);
-  long linearBinary = 0;
-  long slopes = 0;
-  for (const ReliefRay& ray : RaysAt80Degrees(17))
-  {
-    linearBinary += reliefSearchLinearBinary(ray, 10, 5).samples;
-    slopes += reliefSearchSlopeMipmap(ray, 0, 0).samples;
-  }
-  std::cout << "terrain at 80 degrees: LinearBinary " << linearBinary / 2000.0
-            << " samples per ray, SlopeMipmap " << slopes / 2000.0 << "\n";
+  UseTerrain();
+  const double linearBinary = SamplesPerRayAt80Degrees(&reliefSearchLinearBinary, 10, 5, 17);
+  const double slopes = SamplesPerRayAt80Degrees(&reliefSearchSlopeMipmap, 0, 0, 17);
+  std::cout << "terrain at 80 degrees: LinearBinary " << linearBinary
+            << " samples per ray, SlopeMipmap " << slopes << "\n";
   EXPECT_LT(slopes, 0.95 * linearBinary);
 }
 
