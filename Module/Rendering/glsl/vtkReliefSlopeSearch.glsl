@@ -400,9 +400,10 @@ ReliefSlopeFall reliefSlopeFallCell(vec2 cell, float t, float tOut)
 
 // The level the search goes on at past a node of `level` that holds `cell`, left at tOut:
 // one up where the cell after it has another parent, or lies in another tile.
-int reliefSlopeLevelPast(ReliefGridRay grid, vec2 cell, float tOut, int level, vec2 size)
+int reliefSlopeLevelPast(ReliefGridRay grid, vec2 signs, vec2 inverseRun, vec2 cell, float tOut,
+  int level, vec2 size)
 {
-  vec2 next = reliefCellAfter(grid, tOut, reliefStepSigns(grid), reliefInverseRun(grid));
+  vec2 next = reliefCellAfter(grid, tOut, signs, inverseRun);
   vec2 tile = floor(vec2(cell.x / size.x, cell.y / size.y));
   vec2 origin = vec2(tile.x * size.x, tile.y * size.y);
   float parentSpan = float(2 << level);
@@ -596,7 +597,7 @@ ReliefHit reliefSlopeMipmapWithin(ReliefRay ray, float endSpan)
     if (passes)
     {
       // past the node, and up a level when the next node has another parent
-      level = reliefSlopeLevelPast(grid, passCell, passExit, level, size);
+      level = reliefSlopeLevelPast(grid, signs, inverseRun, passCell, passExit, level, size);
       t = passExit;
       gapLow = passLow;
     }
