@@ -53,18 +53,30 @@ unsigned int TopCode(double top)
   return static_cast<unsigned int>(std::min(scaled, std::ldexp(1.0, TopBits) - 1.0));
 }
 
-// The 4-bit code of a grandchild whose top lies `offset` below its node's decoded top, on
-// the step 2^-(exponent + 4): rounded down, and clamped to the largest code. The top and
-// every code's offset are exact in a float, and so is their sum (at most 21 significant
-// bits), but a GPU may take the step as a reciprocal a little too large: a code never
-// reaches within a 1024th of a step of the grandchild's top.
-unsigned int GrandchildCode(double offset, int exponent)
+// The inverse of the step of grandchild codes on `exponent`, 2^(exponent + 4), and the
+// step: both exact.
+double GrandchildInverseStep(int exponent)
 {
-  const double step = std::ldexp(1.0, -(exponent + 4));
+  return static_cast<double>(1 << (exponent + 4));
+}
+
+double GrandchildStep(int exponent)
+{
+  return 1.0 / GrandchildInverseStep(exponent);
+}
+
+// The 4-bit code of a grandchild whose top lies `offset` below its node's decoded top, on
+// `step` (GrandchildStep; inverseStep its inverse): rounded down, and clamped to the largest
+// code. The top and every code's offset are exact in a float, and so is their sum (at most
+// 21 significant bits), but a GPU may take the step as a reciprocal a little too large: a
+// code never reaches within a 1024th of a step of the grandchild's top. The step is a power
+// of two, so the offset times its inverse is the exact quotient, and truncation its floor.
+unsigned int GrandchildCode(double offset, double step, double inverseStep)
+{
   const double below = offset - step / 1024.0;
-  return below > 0.0
-    ? static_cast<unsigned int>(std::min(std::floor(below / step), GrandchildCodes - 1.0))
-    : 0u;
+  return below > 0.0 ? std::min(static_cast<unsigned int>(below * inverseStep),
+                         static_cast<unsigned int>(GrandchildCodes - 1))
+                     : 0u;
 }
 
 // Where code k of the output's three words lies (EncodeGrandchildTops): after the 4-bit
@@ -110,17 +122,23 @@ void vtkSlopeMipmapFilter::EncodeGrandchildTops(
   double top, const double grandchildTops[16], float words[3])
 {
   const double base = DecodedTop(top);
+  double offsets[16];
+  for (int k = 0; k < 16; ++k)
+  {
+    offsets[k] = grandchildTops[k] - base;
+  }
   // the step that rounds the sixteen tops down the least in all: a finer one holds the low
   // tops closer but clamps the high ones to the largest code
   int exponent = 0;
   double leastRounding = 0.0;
   for (int candidate = 0; candidate < GrandchildExponents; ++candidate)
   {
+    const double step = GrandchildStep(candidate);
+    const double inverseStep = GrandchildInverseStep(candidate);
     double rounding = 0.0;
     for (int k = 0; k < 16; ++k)
     {
-      rounding += grandchildTops[k] - base - GrandchildCode(grandchildTops[k] - base, candidate) *
-          std::ldexp(1.0, -(candidate + 4));
+      rounding += offsets[k] - GrandchildCode(offsets[k], step, inverseStep) * step;
     }
     if (candidate == 0 || rounding < leastRounding)
     {
@@ -128,12 +146,14 @@ void vtkSlopeMipmapFilter::EncodeGrandchildTops(
       leastRounding = rounding;
     }
   }
+  const double step = GrandchildStep(exponent);
+  const double inverseStep = GrandchildInverseStep(exponent);
   unsigned int packed[3] = { static_cast<unsigned int>(exponent), 0u, 0u };
   for (int k = 0; k < 16; ++k)
   {
     int word, shift;
     GrandchildCodePlace(k, word, shift);
-    packed[word] |= GrandchildCode(grandchildTops[k] - base, exponent) << shift;
+    packed[word] |= GrandchildCode(offsets[k], step, inverseStep) << shift;
   }
   for (int w = 0; w < 3; ++w)
   {
