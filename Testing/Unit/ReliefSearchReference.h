@@ -8,6 +8,7 @@
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenImageIOReader.h"
 #include "vtkPointData.h"
@@ -62,14 +63,18 @@ DepthField RandomField(int width, int height, unsigned seed, float low, float hi
   return field;
 }
 
-// A height map of Data/ as the relief texture filter turns it into depths.
-DepthField DataField(const char* file)
+// A height map of Data/ as the relief texture filter turns it into depths; resampled to
+// size x size first where size is given, as the bench's methods table does.
+DepthField DataField(const char* file, int size = 0)
 {
   const char* data = std::getenv("RELIEF_DATA_DIR");
   vtkNew<vtkOpenImageIOReader> reader;
   reader->SetFileName((std::string(data ? data : "Data") + "/" + file).c_str());
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputConnection(reader->GetOutputPort());
+  resize->SetOutputDimensions(size, size, 1);
   vtkNew<vtkReliefTextureFilter> relief;
-  relief->SetInputConnection(reader->GetOutputPort());
+  relief->SetInputConnection(size > 0 ? resize->GetOutputPort() : reader->GetOutputPort());
   relief->Update();
   return FieldOf(relief->GetOutput());
 }

@@ -117,6 +117,28 @@ TEST_F(ReliefSlopeMipmap, TakesFewerSamplesThanLinearBinaryAtEightyDegrees)
   EXPECT_LT(slopes, 0.95 * linearBinary);
 }
 
+TEST(ReliefSlopeMipmapRefinement, ReadsACellOfTheBracketWhereItClosesOnACellBorder)
+{
+  // a pixel's view ray in the bench's methods table (the stones resampled to 2048^2, seen
+  // at 45 degrees) whose bracket closed on a cell border, the crossing there within
+  // rounding: the cell read there was the one past the border, its part of the bracket
+  // empty, and it was read again until the loop ended, then the bracket walked: 85 samples
+  const DepthField field = DataField("stones_height.png", 2048);
+  const DepthPyramid pyramid = PyramidOf(field);
+  const SlopePyramid slopes = SlopesOf(field);
+  CurrentField = &field;
+  CurrentPyramid = &pyramid;
+  CurrentSlopes = &slopes;
+  const ReliefRay ray =
+    reliefViewRay(vec2(3.3417996f, 1.9545344f), vec3(0.0397292f, 0.0786538f, 1.0f));
+  const ReliefHit hit = reliefSearchSlopeMipmap(ray, 0, 0);
+  EXPECT_LE(hit.samples, 16);
+  EXPECT_LT(HitError(field, ray, hit.t, ReferenceHit(field, ray)), Tolerance);
+  CurrentField = nullptr;
+  CurrentPyramid = nullptr;
+  CurrentSlopes = nullptr;
+}
+
 TEST_F(ReliefSlopeMipmap, GrandchildTopsInHandSaveReads)
 {
   // the same rays with every grandchild's top coded as its grandparent's (the codes'

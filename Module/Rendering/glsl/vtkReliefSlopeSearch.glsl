@@ -171,14 +171,28 @@ float reliefHermiteRoot(float g0, float d0, float g1, float d1)
   return s;
 }
 
+// Where the ray crosses the column and the row it enters `cell` by, unclamped.
+vec2 reliefSlopeCellEntries(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverseRun)
+{
+  return reliefCrossings(grid,
+    vec2(cell.x + 1.0f - max(signs.x, 0.0f), cell.y + 1.0f - max(signs.y, 0.0f)), signs,
+    inverseRun);
+}
+
 // Where the ray enters and leaves `cell`: (entry, exit), unclamped.
 vec2 reliefSlopeCellSpan(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverseRun)
 {
-  vec2 ahead = vec2(max(signs.x, 0.0f), max(signs.y, 0.0f));
-  vec2 entries = reliefCrossings(
-    grid, vec2(cell.x + 1.0f - ahead.x, cell.y + 1.0f - ahead.y), signs, inverseRun);
-  vec2 exits = reliefCrossings(grid, cell + ahead, signs, inverseRun);
+  vec2 entries = reliefSlopeCellEntries(grid, cell, signs, inverseRun);
+  vec2 exits = reliefCrossings(
+    grid, cell + vec2(max(signs.x, 0.0f), max(signs.y, 0.0f)), signs, inverseRun);
   return vec2(max(entries.x, entries.y), min(exits.x, exits.y));
+}
+
+// The cell the ray is in before it enters `cell`: across the later of its two entries.
+vec2 reliefSlopeCellBehind(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverseRun)
+{
+  vec2 entries = reliefSlopeCellEntries(grid, cell, signs, inverseRun);
+  return entries.x > entries.y ? vec2(cell.x - signs.x, cell.y) : vec2(cell.x, cell.y - signs.y);
 }
 
 // The crossing in [above, below], where the gap falls all along (at a rate within
@@ -219,8 +233,15 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
     float probe = min(max(width > 0.5f * olderWidth ? 0.5f * (low + high) : estimate, low), high);
     olderWidth = lastWidth;
     lastWidth = width;
-    vec2 cell = floor(reliefGridAt(grid, probe));
+    // the cell the ray enters at the probe, so that its part of the bracket is not empty;
+    // at the bracket's far end (the crossing there within rounding), the one before
+    vec2 cell = reliefCellAfter(grid, probe, signs, inverseRun);
     vec2 cellSpan = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
+    if (cellSpan.x >= below)
+    {
+      cell = reliefSlopeCellBehind(grid, cell, signs, inverseRun);
+      cellSpan = reliefSlopeCellSpan(grid, cell, signs, inverseRun);
+    }
     float tIn = min(max(cellSpan.x, above), probe);
     float tOut = max(min(cellSpan.y, below), probe);
     vec4 depths = RELIEF_CELL_DEPTHS(cell);
