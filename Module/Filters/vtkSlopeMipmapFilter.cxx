@@ -70,13 +70,14 @@ double GrandchildStep(int exponent)
 // code. The top and every code's offset are exact in a float, and so is their sum (at most
 // 21 significant bits), but a GPU may take the step as a reciprocal a little too large: a
 // code never reaches within a 1024th of a step of the grandchild's top. The step is a power
-// of two, so the offset times its inverse is the exact quotient, and truncation its floor.
+// of two, so `below` times its inverse is the exact quotient, and truncation (`below` > 0,
+// clamped first) its floor.
 unsigned int GrandchildCode(double offset, double step, double inverseStep)
 {
   const double below = offset - step / 1024.0;
-  return below > 0.0 ? std::min(static_cast<unsigned int>(below * inverseStep),
-                         static_cast<unsigned int>(GrandchildCodes - 1))
-                     : 0u;
+  return below > 0.0
+    ? static_cast<unsigned int>(std::min(below * inverseStep, GrandchildCodes - 1.0))
+    : 0u;
 }
 
 // Where code k of the output's three words lies (EncodeGrandchildTops): after the 4-bit

@@ -66,16 +66,20 @@ const DepthField& StonesAt(int size, int source = 0)
   auto found = fields.find(key);
   if (found == fields.end())
   {
-    vtkNew<vtkImageResize> resample;
-    resample->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-    const int first = key.second > 0 ? key.second : size;
-    resample->SetOutputDimensions(first, first, 1);
-    vtkNew<vtkImageResize> resize;
-    resize->SetInputConnection(resample->GetOutputPort());
-    resize->SetOutputDimensions(size, size, 1);
+    vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
+    for (int resampled : { key.second, size })
+    {
+      if (resampled > 0)
+      {
+        vtkNew<vtkImageResize> resize;
+        resize->SetInputData(heights);
+        resize->SetOutputDimensions(resampled, resampled, 1);
+        resize->Update();
+        heights = resize->GetOutput();
+      }
+    }
     vtkNew<vtkReliefTextureFilter> relief;
-    relief->SetInputConnection(
-      key.second > 0 ? resize->GetOutputPort() : resample->GetOutputPort());
+    relief->SetInputData(heights);
     relief->Update();
     found = fields.emplace(key, FieldOf(relief->GetOutput())).first;
   }
@@ -231,7 +235,7 @@ std::string ExactTable(const ReliefRobustStudy::Options& options, int source)
 
 std::string ReliefRobustStudy::ExactReport(const Options& options)
 {
-  const int smallest = options.Sizes.front();
+  const int smallest = *std::min_element(options.Sizes.begin(), options.Sizes.end());
   std::ostringstream report;
   report << "Mean samples per ray of the exact searches on the same rays (" << options.Rays
          << " per size and angle), uncapped, against LinearBinary's\n"

@@ -70,11 +70,16 @@ DepthField DataField(const char* file, int size = 0)
   const char* data = std::getenv("RELIEF_DATA_DIR");
   vtkNew<vtkOpenImageIOReader> reader;
   reader->SetFileName((std::string(data ? data : "Data") + "/" + file).c_str());
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputConnection(reader->GetOutputPort());
-  resize->SetOutputDimensions(size, size, 1);
+  vtkSmartPointer<vtkAlgorithm> heights = reader.GetPointer();
+  if (size > 0)
+  {
+    auto resize = vtkSmartPointer<vtkImageResize>::New();
+    resize->SetInputConnection(heights->GetOutputPort());
+    resize->SetOutputDimensions(size, size, 1);
+    heights = resize;
+  }
   vtkNew<vtkReliefTextureFilter> relief;
-  relief->SetInputConnection(size > 0 ? resize->GetOutputPort() : reader->GetOutputPort());
+  relief->SetInputConnection(heights->GetOutputPort());
   relief->Update();
   return FieldOf(relief->GetOutput());
 }

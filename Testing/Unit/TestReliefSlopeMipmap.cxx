@@ -139,6 +139,38 @@ TEST(ReliefSlopeMipmapRefinement, ReadsACellOfTheBracketWhereItClosesOnACellBord
   CurrentSlopes = nullptr;
 }
 
+TEST(ReliefSlopeMipmapRefinement, ReadsACellOfTheBracketWhereItClosesOnACorner)
+{
+  // a ray along the diagonal through cell corners (grid (0, 0) at t = 0, four texels
+  // along u and v per unit of t), over a field that rises against it by 0.2 a texel and
+  // meets it a rounding before the corner (2, 2) at t = 0.5: the bracket [0.25, 0.5]'s
+  // probe rounds onto the corner, where neither the cell past it nor the two beside it
+  // hold any of the bracket; the one before it, diagonally, holds the crossing
+  DepthField field;
+  field.Width = 8;
+  field.Height = 8;
+  for (int j = 0; j < 8; ++j)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      field.Depths.push_back(std::min(std::max(0.5f + 0.2f * float(4 - i - j), 0.0f), 1.0f));
+    }
+  }
+  field.Depths[2 * 8 + 2] = std::nextafter(0.5f, 0.0f);
+  CurrentField = &field;
+  const ReliefRay ray = reliefViewRay(vec2(0.5f / 8.0f), vec3(0.5f, 0.5f, 1.0f));
+  const ReliefGridRay grid = reliefGridRay(ray, vec2(8.0f));
+  const vec2 corner(2.0f);
+  const vec2 gapBelow = reliefPatchGap(grid, corner, CellDepths(corner), 0.5f);
+  ASSERT_LT(gapBelow.x, 0.0f);
+  const ReliefHit hit = reliefSlopeRefine(
+    ray, grid, 0.25f, 0.5f, vec2(-1.0f, 0.0f), gapBelow, vec2(-2.8f, -2.4f), 0, 0.0f);
+  EXPECT_TRUE(hit.hit);
+  EXPECT_LE(hit.samples, 2);
+  EXPECT_NEAR(hit.t, 0.5f, 1e-6f);
+  CurrentField = nullptr;
+}
+
 TEST_F(ReliefSlopeMipmap, GrandchildTopsInHandSaveReads)
 {
   // the same rays with every grandchild's top coded as its grandparent's (the codes'

@@ -188,11 +188,14 @@ vec2 reliefSlopeCellSpan(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverse
   return vec2(max(entries.x, entries.y), min(exits.x, exits.y));
 }
 
-// The cell the ray is in before it enters `cell`: across the later of its two entries.
+// The cell the ray is in before it enters `cell`: across the later of its two entries, or
+// across both where they tie (through a corner, a cell beside it meets the ray only there).
 vec2 reliefSlopeCellBehind(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverseRun)
 {
   vec2 entries = reliefSlopeCellEntries(grid, cell, signs, inverseRun);
-  return entries.x > entries.y ? vec2(cell.x - signs.x, cell.y) : vec2(cell.x, cell.y - signs.y);
+  float entry = max(entries.x, entries.y);
+  return vec2(entries.x >= entry ? cell.x - signs.x : cell.x,
+    entries.y >= entry ? cell.y - signs.y : cell.y);
 }
 
 // The crossing in [above, below], where the gap falls all along (at a rate within
@@ -229,8 +232,10 @@ ReliefHit reliefSlopeRefine(ReliefRay ray, ReliefGridRay grid, float above, floa
       ? above +
         width * reliefHermiteRoot(gapAbove.x, gapAbove.y * width, gapBelow.x, gapBelow.y * width)
       : (gapBelow.y < 0.0f ? below - gapBelow.x / gapBelow.y : 0.5f * (low + high));
-    // rounding may cross the bounds: then `high` (GLSL's clamp is undefined there)
-    float probe = min(max(width > 0.5f * olderWidth ? 0.5f * (low + high) : estimate, low), high);
+    // rounding may cross the bounds: then `high` (GLSL's clamp is undefined there), and
+    // `high` may round below `above`: the probe stays in the bracket
+    float probe = max(
+      min(max(width > 0.5f * olderWidth ? 0.5f * (low + high) : estimate, low), high), above);
     olderWidth = lastWidth;
     lastWidth = width;
     // the cell the ray enters at the probe, so that its part of the bracket is not empty;
