@@ -173,6 +173,7 @@ inline vec4 CellDepths(vec2 cell)
 
 #define RELIEF_DEPTH(uv) ReliefCpuMirror::SampleCurrentField(uv)
 #define RELIEF_DEPTH_SIZE vec2(CurrentField->Width, CurrentField->Height)
+#define RELIEF_DEPTH_REPEATS (!CurrentField->ClampToEdge)
 #define RELIEF_CELL_DEPTHS(cell) ReliefCpuMirror::CellDepths(cell)
 #define RELIEF_PYRAMID_DEPTH(node, level) CurrentPyramid->At(node, level)
 #define RELIEF_PYRAMID_TOP CurrentPyramid->Top()
@@ -280,6 +281,7 @@ inline Search FindSearch(const std::string& function)
 }
 #undef RELIEF_DEPTH
 #undef RELIEF_DEPTH_SIZE
+#undef RELIEF_DEPTH_REPEATS
 #undef RELIEF_CELL_DEPTHS
 #undef RELIEF_PYRAMID_DEPTH
 #undef RELIEF_PYRAMID_TOP

@@ -156,6 +156,76 @@ TEST_F(ReliefExactSearch, ExactSearchesFindWhereRisingRaysEnterTheField)
   }
 }
 
+// Texture coordinates a thousand tiles out, as a mesh's may be: the exact grid searches
+// keep their hits there, their texel coordinates taken from the first tile
+// (reliefGridRay). Taken where the ray is, hits came out up to 180 texels off.
+TEST_F(ReliefExactSearch, ExactSearchesKeepTheirHitsFarOutInTheTiling)
+{
+  const std::pair<const char*, Search> searches[] = { { "ExactDDA", &reliefSearchExactDDA },
+    { "MaximumMipmap", &reliefSearchMaximumMipmap }, { "ConeStep", &reliefSearchConeStep },
+    { "SafetyRadius", &reliefSearchSafetyRadius }, { "SlopeMipmap", &reliefSearchSlopeMipmap },
+    { "Automatic", &reliefSearchAutomatic } };
+  for (const Scene& scene : *AllScenes)
+  {
+    Use(scene);
+    const ConeStepMap cones = ConeMapOf(scene.Field);
+    const SlopePyramid slopes = SlopesOf(scene.Field);
+    const SafetyRadiusMap radii = RadiiOf(scene.Field, 0.0);
+    CurrentConeMap = &cones;
+    CurrentSlopes = &slopes;
+    CurrentRadii = &radii;
+    std::vector<ReliefRay> rays = ViewRays(31, 0.1f);
+    std::vector<double> references;
+    for (ReliefRay& ray : rays)
+    {
+      ray.origin.x += 1000.0f;
+      ray.origin.y -= 700.0f;
+      references.push_back(ReferenceHit(scene.Field, ray));
+    }
+    for (const auto& [method, search] : searches)
+    {
+      int wrong = 0;
+      double worst = 0.0;
+      for (size_t k = 0; k < rays.size(); ++k)
+      {
+        const double error = HitError(scene.Field, rays[k], search(rays[k], 0, 0).t, references[k]);
+        worst = std::max(worst, error);
+        // one of these rays is 1.003e-3 off from the first tile too: float rounding
+        wrong += error <= 2.0 * Tolerance ? 0 : 1;
+      }
+      EXPECT_EQ(wrong, 0) << method << " on " << scene.Name << ": worst hit " << worst
+                          << " texels off";
+    }
+  }
+}
+
+// A field clamped at its edges (an impostor's views) is searched where the ray is: rays
+// from a hair before its edge, where rounding puts an impostor's, are not moved into
+// the tile, which would start them at the opposite edge. They stay over the field, as an
+// impostor's do (its segments end at its box).
+TEST_F(ReliefExactSearch, ExactSearchesReadAClampedFieldWhereTheRayIs)
+{
+  Scene clamped = (*AllScenes)[5]; // the terrain
+  clamped.Field.ClampToEdge = true;
+  Use(clamped);
+  std::mt19937 generator(41);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  int wrong = 0;
+  for (int k = 0; k < 1000; ++k)
+  {
+    const float along = 0.2f + 0.6f * unit(generator);
+    const float across = 0.2f * (unit(generator) - 0.5f);
+    const ReliefRay ray = k % 2 ? reliefViewRay(vec2(-1e-7f, along), vec3(0.3f, across, 1.0f))
+                                : reliefViewRay(vec2(along, -1e-7f), vec3(across, 0.3f, 1.0f));
+    const double reference = ReferenceHit(clamped.Field, ray);
+    for (Search search : { &reliefSearchExactDDA, &reliefSearchMaximumMipmap })
+    {
+      wrong += HitError(clamped.Field, ray, search(ray, 0, 0).t, reference) <= Tolerance ? 0 : 1;
+    }
+  }
+  EXPECT_EQ(wrong, 0) << "of 2000 hits";
+}
+
 TEST_F(ReliefExactSearch, FixedStepMethodsMissRatesAreMeasured)
 {
   // Not exact by design: the share of rays whose hit is off by more than a texel is

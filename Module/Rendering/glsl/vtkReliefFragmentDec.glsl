@@ -66,6 +66,7 @@ float reliefPathMaterialShare();
 // and at oblique views: Documentation/results.md, shading).
 #define RELIEF_DEPTH(uv) textureLod(reliefDepthTexture, uv, 0.0).r
 #define RELIEF_DEPTH_SIZE reliefTextureSize
+#define RELIEF_DEPTH_REPEATS true
 // a cell's corners (i, j), (i+1, j), (i, j+1), (i+1, j+1), the texture repeating
 #ifdef GL_ARB_texture_gather
 #define RELIEF_CELL_DEPTHS(cell) \
