@@ -35,7 +35,7 @@ float reliefFragCoordW = 1.0;
 #define RELIEF_IMPOSTOR_DEPTH_RATIO(view) reliefImpostorDepthRatios[view]
 #define RELIEF_DEPTH(uv) textureLod(reliefImpostorDepths, vec3(uv, reliefImpostorLayer), 0.0).r
 #define RELIEF_DEPTH_SIZE reliefTextureSize
-#define RELIEF_DEPTH_REPEATS false
+#define RELIEF_DEPTH_REPEATS false // the views are clamped at their edges
 #ifdef GL_ARB_texture_gather
 #define RELIEF_CELL_DEPTHS(cell) textureGather(reliefImpostorDepths, \
   vec3(((cell) + 1.0) / reliefTextureSize, reliefImpostorLayer)).wzxy
