@@ -3,7 +3,6 @@
 #include "ReliefScene.h"
 
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkReliefTextureFilter.h"
 
@@ -66,20 +65,12 @@ const DepthField& StonesAt(int size, int source = 0)
   auto found = fields.find(key);
   if (found == fields.end())
   {
-    vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
-    for (int resampled : { key.second, size })
-    {
-      if (resampled > 0)
-      {
-        vtkNew<vtkImageResize> resize;
-        resize->SetInputData(heights);
-        resize->SetOutputDimensions(resampled, resampled, 1);
-        resize->Update();
-        heights = resize->GetOutput();
-      }
-    }
+    const char* name = "stones_height.png";
+    vtkSmartPointer<vtkImageData> heights = key.second > 0
+      ? ReliefScene::ResizedHeightMap(name, key.second)
+      : ReliefScene::ReadImage(name);
     vtkNew<vtkReliefTextureFilter> relief;
-    relief->SetInputData(heights);
+    relief->SetInputData(ReliefScene::ResizedImage(heights, size));
     relief->Update();
     found = fields.emplace(key, FieldOf(relief->GetOutput())).first;
   }

@@ -804,13 +804,18 @@ void ShowQuadricShadows(vtkRenderWindow* window, int width, int height)
   ShowShadowHalf(window, vtkSmartPointer<vtkOpenGLQuadricReliefMapper>::New(), sphere, 0.5);
 }
 
-vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size)
+vtkSmartPointer<vtkImageData> ResizedImage(vtkImageData* image, int size)
 {
   vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReadImage(name));
+  resize->SetInputData(image);
   resize->SetOutputDimensions(size, size, 1);
   resize->Update();
   return resize->GetOutput();
+}
+
+vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size)
+{
+  return ResizedImage(ReadImage(name), size);
 }
 
 Lineup::Lineup(vtkRenderWindow* window, vtkRenderer* renderer,

@@ -133,7 +133,10 @@ void UseShadowMaps(vtkRenderer* renderer);
 void ShowQuadricShadows(vtkRenderWindow* window, int width, int height);
 ///@}
 
-/// The height map `name` of Data/ resampled to size x size texels (vtkImageResize).
+/// `image` resampled to size x size texels (vtkImageResize).
+vtkSmartPointer<vtkImageData> ResizedImage(vtkImageData* image, int size);
+
+/// The height map `name` of Data/ resampled to size x size texels (ResizedImage).
 vtkSmartPointer<vtkImageData> ResizedHeightMap(const std::string& name, int size);
 
 /// The actors one study compares, in one renderer (its other props removed), shown one

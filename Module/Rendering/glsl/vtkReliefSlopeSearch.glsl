@@ -183,8 +183,7 @@ vec2 reliefSlopeCellEntries(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inve
 vec2 reliefSlopeCellSpan(ReliefGridRay grid, vec2 cell, vec2 signs, vec2 inverseRun)
 {
   vec2 entries = reliefSlopeCellEntries(grid, cell, signs, inverseRun);
-  vec2 exits = reliefCrossings(
-    grid, cell + vec2(max(signs.x, 0.0f), max(signs.y, 0.0f)), signs, inverseRun);
+  vec2 exits = reliefBoxExits(grid, cell, cell + 1.0f, signs, inverseRun);
   return vec2(max(entries.x, entries.y), min(exits.x, exits.y));
 }
 
