@@ -7,7 +7,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
@@ -298,11 +297,10 @@ std::string Study(const Options& requested)
   options.Frames = std::max(options.Frames, 1);
   options.Rounds = std::max(options.Rounds, 1);
   const auto start = std::chrono::steady_clock::now();
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-  resize->SetOutputDimensions(options.HeightMapSize, options.HeightMapSize, 1);
+  vtkSmartPointer<vtkImageData> heights =
+    ReliefScene::ResizedHeightMap("stones_height.png", options.HeightMapSize);
   vtkNew<vtkReliefTextureFilter> reliefTexture;
-  reliefTexture->SetInputConnection(resize->GetOutputPort());
+  reliefTexture->SetInputData(heights);
   reliefTexture->Update();
   vtkImageData* relief = reliefTexture->GetOutput();
 
@@ -313,7 +311,7 @@ std::string Study(const Options& requested)
 
   vtkNew<vtkOpenGLReliefMapper> reliefMapper;
   reliefMapper->SetInputData(square);
-  reliefMapper->SetHeightMapConnection(resize->GetOutputPort());
+  reliefMapper->SetHeightMapData(heights);
   reliefMapper->SetDepthScale(options.DepthScale);
   // the stock mapper casts no shadows: both are lit alike, without them
   reliefMapper->SetSelfShadowing(false);

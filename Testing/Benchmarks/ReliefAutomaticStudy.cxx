@@ -9,7 +9,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
@@ -35,11 +34,7 @@ vtkSmartPointer<vtkImageData> HeightMap(const std::string& name, int size)
   {
     return ReliefShadingStudy::Steps();
   }
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage(name));
-  resize->SetOutputDimensions(size, size, 1);
-  resize->Update();
-  return resize->GetOutput();
+  return ReliefScene::ResizedHeightMap(name, size);
 }
 
 std::string Label(const std::string& family, const std::string& parameters)

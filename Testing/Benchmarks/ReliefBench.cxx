@@ -24,7 +24,6 @@
 #include "vtkCamera.h"
 #include "vtkConeStepMapFilter.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkLocalQuadricFilter.h"
 #include "vtkMaximumMipmapFilter.h"
 #include "vtkNew.h"
@@ -134,11 +133,8 @@ std::vector<TableMap> TableMaps(
   vtkSmartPointer<vtkImageData> heights = ReliefScene::ReadImage("stones_height.png");
   for (int size : sizes)
   {
-    vtkNew<vtkImageResize> resize;
-    resize->SetInputData(heights);
-    resize->SetOutputDimensions(size, size, 1);
-    resize->Update();
-    maps.push_back({ std::to_string(size) + "x" + std::to_string(size), resize->GetOutput() });
+    maps.push_back({ std::to_string(size) + "x" + std::to_string(size),
+      ReliefScene::ResizedImage(heights, size) });
   }
   for (const std::string& name : others)
   {
@@ -271,11 +267,8 @@ double ResidentBytes()
 // uploads and the shader's compilation) and the next, for one actor and for `many`.
 std::string SharingTable(int size, int many)
 {
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-  resize->SetOutputDimensions(size, size, 1);
-  resize->Update();
-  vtkImageData* heights = resize->GetOutput();
+  vtkSmartPointer<vtkImageData> heights =
+    ReliefScene::ResizedHeightMap("stones_height.png", size);
   auto square = ReliefScene::Square(1.0);
   {
     // OpenGL's own first start (its libraries, a first context) counts for neither
@@ -349,11 +342,8 @@ std::string FiltersTable(int rounds)
   table << "| filter | input | seconds (median) | target |\n| --- | ---: | ---: | ---: |\n";
   for (const Case& run : cases)
   {
-    vtkNew<vtkImageResize> resize;
-    resize->SetInputData(heights);
-    resize->SetOutputDimensions(run.Size, run.Size, 1);
     vtkNew<vtkReliefTextureFilter> texture;
-    texture->SetInputConnection(resize->GetOutputPort());
+    texture->SetInputData(ReliefScene::ResizedImage(heights, run.Size));
     texture->Update();
     run.Filter->SetInputConnection(texture->GetOutputPort());
     std::vector<double> seconds;

@@ -14,7 +14,6 @@
 #include "vtkCellArray.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOpenGLReliefMapper.h"
 #include "vtkPolyData.h"
@@ -69,11 +68,7 @@ struct Error
 
 vtkSmartPointer<vtkImageData> Stones(int size)
 {
-  vtkNew<vtkImageResize> resize;
-  resize->SetInputData(ReliefScene::ReadImage("stones_height.png"));
-  resize->SetOutputDimensions(size, size, 1);
-  resize->Update();
-  return resize->GetOutput();
+  return ReliefScene::ResizedHeightMap("stones_height.png", size);
 }
 
 // A 64x64 height image (white = high) of walls `width` texels wide every 16 texels along
